@@ -1,0 +1,163 @@
+// relgeo/kernel/cgal_kernel.h — any CGAL kernel as a relgeo kernel.
+//
+// Needs CGAL (link relgeo::cgal). Include the CGAL kernel header you use
+// yourself; this header includes none of the heavy ones.
+#pragma once
+
+#include <CGAL/Algebraic_structure_traits.h>
+#include <CGAL/Kernel/global_functions.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <type_traits>
+
+#include "relgeo/core/errors.h"
+#include "relgeo/kernel/certified_sign.h"
+#include "relgeo/kernel/floating_point.h"
+#include "relgeo/kernel/internal/semi_static_filter.h"
+
+namespace CGAL {
+class Epick;
+class Epeck;
+template <class FT>
+struct Simple_cartesian;
+}  // namespace CGAL
+
+namespace relgeo {
+
+/// Short names of the CGAL kernels relgeo knows; specialise for your own.
+template <class K>
+struct Cgal_kernel_name {
+  static std::string get() { return "cgal"; }
+};
+template <>
+struct Cgal_kernel_name<CGAL::Simple_cartesian<double>> {
+  static std::string get() { return "cgal-sc-double"; }
+};
+template <>
+struct Cgal_kernel_name<CGAL::Epick> {
+  static std::string get() { return "cgal-epick"; }
+};
+template <>
+struct Cgal_kernel_name<CGAL::Epeck> {
+  static std::string get() { return "cgal-epeck"; }
+};
+
+/// \brief Adapter turning a CGAL kernel K (Simple_cartesian<double>, Epick,
+/// Epeck, ...) into a relgeo kernel: the same predicates, answers mapped to
+/// Certified_sign. For peer comparison and for clients who already hold CGAL
+/// points.
+///
+/// A kernel is certified when it has filtered (exact) predicates or an exact
+/// number type. For certified kernels with double coordinates (Epick), points
+/// with NaN or infinite coordinates give `uncertain` (CGAL's exact fallback
+/// cannot convert them); kernels with exact constructions refuse such points
+/// at construction (Non_finite_input).
+template <class K>
+class Cgal_kernel {
+  using Base_ft = typename K::FT;
+  static constexpr bool ft_is_exact =
+      std::is_same_v<typename CGAL::Algebraic_structure_traits<Base_ft>::Is_exact, CGAL::Tag_true>;
+
+ public:
+  using Cgal = K;
+  using FT = Base_ft;
+  using Point_2 = typename K::Point_2;
+  using Point_3 = typename K::Point_3;
+
+  static std::string name() { return Cgal_kernel_name<K>::get(); }
+  static constexpr bool has_exact_predicates = bool(K::Has_filtered_predicates) || ft_is_exact;
+  static constexpr bool has_exact_constructions = ft_is_exact;
+  static constexpr bool is_certified = has_exact_predicates;
+  static constexpr double unit_roundoff = ft_is_exact ? 0.0 : unit_roundoff_v<double>;
+  static constexpr std::optional<double> orientation_2_error_bound =
+      has_exact_predicates ? std::optional<double>(0.0)
+      : std::is_same_v<FT, double>
+          ? std::optional<double>(internal::Orientation_filter_constants<double>::eps_2)
+          : std::nullopt;
+  static constexpr std::optional<double> orientation_3_error_bound =
+      has_exact_predicates ? std::optional<double>(0.0)
+      : std::is_same_v<FT, double>
+          ? std::optional<double>(internal::Orientation_filter_constants<double>::eps_3)
+          : std::nullopt;
+
+  struct Construct_point_2 {
+    Point_2 operator()(double x, double y) const {
+      if constexpr (has_exact_constructions)
+        if (!all_finite(x, y)) throw Non_finite_input(name() + ": coordinate is NaN or infinite");
+      return Point_2(x, y);
+    }
+  };
+  struct Construct_point_3 {
+    Point_3 operator()(double x, double y, double z) const {
+      if constexpr (has_exact_constructions)
+        if (!all_finite(x, y, z))
+          throw Non_finite_input(name() + ": coordinate is NaN or infinite");
+      return Point_3(x, y, z);
+    }
+  };
+  struct Orientation_2 {
+    Certified_sign operator()(const Point_2& p, const Point_2& q, const Point_2& r) const {
+      if (refuses(p) || refuses(q) || refuses(r)) return Certified_sign::uncertain;
+      return from_cgal(typename K::Orientation_2()(p, q, r));
+    }
+  };
+  struct Orientation_3 {
+    Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r,
+                              const Point_3& s) const {
+      if (refuses(p) || refuses(q) || refuses(r) || refuses(s)) return Certified_sign::uncertain;
+      return from_cgal(typename K::Orientation_3()(p, q, r, s));
+    }
+  };
+  struct Compare_xy_2 {
+    Certified_sign operator()(const Point_2& p, const Point_2& q) const {
+      if (refuses(p) || refuses(q)) return Certified_sign::uncertain;
+      return from_cgal(typename K::Compare_xy_2()(p, q));
+    }
+  };
+  /// Same contract as relgeo's own Coplanar_orientation_3 (kernel_base.h).
+  struct Coplanar_orientation_3 {
+    Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r) const {
+      if (refuses(p) || refuses(q) || refuses(r)) return Certified_sign::uncertain;
+      return from_cgal(typename K::Coplanar_orientation_3()(p, q, r));
+    }
+    Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r,
+                              const Point_3& s) const {
+      if (refuses(p) || refuses(q) || refuses(r) || refuses(s)) return Certified_sign::uncertain;
+      if (typename K::Coplanar_orientation_3()(p, q, r) == CGAL::COLLINEAR)
+        throw Precondition_violation("coplanar_orientation(p,q,r,s): p, q, r are collinear");
+      return from_cgal(typename K::Coplanar_orientation_3()(p, q, r, s));
+    }
+  };
+
+  Construct_point_2 construct_point_2_object() const { return {}; }
+  Construct_point_3 construct_point_3_object() const { return {}; }
+  Orientation_2 orientation_2_object() const { return {}; }
+  Orientation_3 orientation_3_object() const { return {}; }
+  Compare_xy_2 compare_xy_2_object() const { return {}; }
+  Coplanar_orientation_3 coplanar_orientation_3_object() const { return {}; }
+
+ private:
+  template <class S>
+  static Certified_sign from_cgal(S s) {
+    return static_cast<Certified_sign>(static_cast<int>(s));
+  }
+  // Certified kernels with inexact (double) coordinates cannot decide on
+  // non-finite coordinates; the others either lie anyway (naive) or cannot
+  // hold them.
+  static bool refuses(const Point_2& p) {
+    if constexpr (is_certified && !has_exact_constructions && std::is_same_v<FT, double>)
+      return !all_finite(p.x(), p.y());
+    else
+      return false;
+  }
+  static bool refuses(const Point_3& p) {
+    if constexpr (is_certified && !has_exact_constructions && std::is_same_v<FT, double>)
+      return !all_finite(p.x(), p.y(), p.z());
+    else
+      return false;
+  }
+};
+
+}  // namespace relgeo

@@ -1,0 +1,71 @@
+// relgeo/kernel/concepts.h — what a geometric kernel is, as C++20 concepts.
+//
+// A kernel is a traits class in CGAL's style: nested number and point types,
+// predicate and construction functors fetched through `*_object()` factories,
+// and static metadata. Every predicate answers a relgeo::Certified_sign.
+// relgeo's models: Naive_kernel<T>, Failsafe_kernel<T>, Interval_kernel,
+// Filtered_exact_kernel, Exact_kernel, Mpfr_kernel<Bits>, Cgal_kernel<K>.
+// See doc/kernels.md for which to choose.
+#pragma once
+
+#include <concepts>
+#include <optional>
+#include <string>
+
+#include "relgeo/kernel/certified_sign.h"
+
+namespace relgeo {
+
+/// \concept KernelProperties
+/// Static metadata of a kernel:
+///  * `name()` — a short self-explaining name ("double", "failsafe<double>"...);
+///  * `unit_roundoff` — u of its floating-point arithmetic (0 when exact);
+///  * `is_certified` — the soundness rule holds: a definite answer is the exact sign;
+///  * `has_exact_predicates`, `has_exact_constructions`;
+///  * `orientation_2_error_bound`, `orientation_3_error_bound` — eps with
+///    |computed determinant - exact| <= eps * Mx * My (* Mz) (the a-priori
+///    constant algorithms use to state their backward-error bound; 0 when
+///    exact, empty when there is no a-priori constant).
+template <class K>
+concept KernelProperties = requires {
+  { K::name() } -> std::convertible_to<std::string>;
+  { K::unit_roundoff } -> std::convertible_to<double>;
+  { K::is_certified } -> std::convertible_to<bool>;
+  { K::has_exact_predicates } -> std::convertible_to<bool>;
+  { K::has_exact_constructions } -> std::convertible_to<bool>;
+  { K::orientation_2_error_bound } -> std::convertible_to<std::optional<double>>;
+  { K::orientation_3_error_bound } -> std::convertible_to<std::optional<double>>;
+};
+
+/// \concept OrientationKernel_2
+/// Planar points with certified orientation and lexicographic comparison, and
+/// points built from double coordinates. Enough for planar convex hulls.
+template <class K>
+concept OrientationKernel_2 =
+    std::copyable<typename K::Point_2> &&
+    requires(const K& k, const typename K::Point_2& p) {
+      typename K::FT;
+      { k.orientation_2_object()(p, p, p) } -> std::same_as<Certified_sign>;
+      { k.compare_xy_2_object()(p, p) } -> std::same_as<Certified_sign>;
+      { k.construct_point_2_object()(0.0, 0.0) } -> std::same_as<typename K::Point_2>;
+    };
+
+/// \concept OrientationKernel_3
+/// Space points with certified orientation and in-plane (coplanar)
+/// orientation, as the triangle-triangle intersection test needs.
+template <class K>
+concept OrientationKernel_3 =
+    std::copyable<typename K::Point_3> &&
+    requires(const K& k, const typename K::Point_3& p) {
+      { k.orientation_3_object()(p, p, p, p) } -> std::same_as<Certified_sign>;
+      { k.coplanar_orientation_3_object()(p, p, p) } -> std::same_as<Certified_sign>;
+      { k.coplanar_orientation_3_object()(p, p, p, p) } -> std::same_as<Certified_sign>;
+      { k.construct_point_3_object()(0.0, 0.0, 0.0) } -> std::same_as<typename K::Point_3>;
+    };
+
+/// \concept Kernel
+/// A complete relgeo kernel: metadata, 2D and 3D predicates.
+template <class K>
+concept Kernel = KernelProperties<K> && OrientationKernel_2<K> && OrientationKernel_3<K>;
+
+}  // namespace relgeo

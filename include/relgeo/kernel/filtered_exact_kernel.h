@@ -1,0 +1,110 @@
+// relgeo/kernel/filtered_exact_kernel.h — exact predicates at floating-point speed.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <utility>
+#include <optional>
+#include <string>
+
+#include "relgeo/kernel/floating_point.h"
+#include "relgeo/kernel/internal/determinants.h"
+#include "relgeo/kernel/internal/exact_dyadic.h"
+#include "relgeo/kernel/internal/kernel_base.h"
+#include "relgeo/kernel/internal/semi_static_filter.h"
+#include "relgeo/kernel/interval.h"
+
+namespace relgeo {
+
+/// Which stage of Filtered_exact_kernel decided a predicate.
+enum class Filter_stage { semi_static, interval, exact, undecidable };
+
+/// \brief Double-coordinate kernel with exact predicates (like CGAL's Epick):
+/// each predicate tries
+///  1. the semi-static epsilon test of Failsafe_kernel<double>,
+///  2. interval arithmetic (relgeo::Interval),
+///  3. exact evaluation in GMP integers (internal/exact_dyadic.h),
+/// and returns the first definite answer, which is always the exact sign.
+/// Constructions are plain double.
+///
+/// The only `uncertain` answer is for NaN or infinite coordinates, whose sign
+/// is undefined.
+class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel, double> {
+ public:
+  static std::string name() { return "filtered"; }
+  static constexpr double unit_roundoff = unit_roundoff_v<double>;  // of constructions
+  static constexpr bool is_certified = true;
+  static constexpr bool has_exact_predicates = true;
+  static constexpr bool has_exact_constructions = false;
+  static constexpr std::optional<double> orientation_2_error_bound = 0.0;
+  static constexpr std::optional<double> orientation_3_error_bound = 0.0;
+
+  static FT from_double(double v) { return v; }
+  static Certified_sign compare_ft(const FT& a, const FT& b) {
+    return internal::compare_certified(a, b);
+  }
+
+  /// The sign and the stage that decided it (for statistics and tests).
+  static std::pair<Certified_sign, Filter_stage> orientation_2_with_stage(const Point_2& p,
+                                                                         const Point_2& q,
+                                                                         const Point_2& r) {
+    const Certified_sign s = internal::filtered_orientation_2<double>(p.x, p.y, q.x, q.y, r.x, r.y);
+    if (is_certain(s)) return {s, Filter_stage::semi_static};
+    return after_semi_static_2(p, q, r);
+  }
+  static std::pair<Certified_sign, Filter_stage> orientation_3_with_stage(const Point_3& p,
+                                                                         const Point_3& q,
+                                                                         const Point_3& r,
+                                                                         const Point_3& s) {
+    const Certified_sign o = internal::filtered_orientation_3<double>(
+        p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z, s.x, s.y, s.z);
+    if (is_certain(o)) return {o, Filter_stage::semi_static};
+    return after_semi_static_3(p, q, r, s);
+  }
+
+  struct Orientation_2 {
+    Certified_sign operator()(const Point_2& p, const Point_2& q, const Point_2& r) const {
+      const Certified_sign s =
+          internal::filtered_orientation_2<double>(p.x, p.y, q.x, q.y, r.x, r.y);
+      if (is_certain(s)) [[likely]]
+        return s;
+      return after_semi_static_2(p, q, r).first;
+    }
+  };
+  struct Orientation_3 {
+    Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r,
+                              const Point_3& s) const {
+      const Certified_sign o = internal::filtered_orientation_3<double>(
+          p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z, s.x, s.y, s.z);
+      if (is_certain(o)) [[likely]]
+        return o;
+      return after_semi_static_3(p, q, r, s).first;
+    }
+  };
+  Orientation_2 orientation_2_object() const { return {}; }
+  Orientation_3 orientation_3_object() const { return {}; }
+ private:
+  // Stages 2 and 3, out of line so the inlined fast path stays small.
+  [[gnu::noinline]] static std::pair<Certified_sign, Filter_stage> after_semi_static_2(
+      const Point_2& p, const Point_2& q, const Point_2& r) {
+    if (!all_finite(p.x, p.y, q.x, q.y, r.x, r.y))
+      return {Certified_sign::uncertain, Filter_stage::undecidable};
+    const Certified_sign s =
+        internal::orientation_2_determinant<Interval>(p.x, p.y, q.x, q.y, r.x, r.y).sign();
+    if (is_certain(s)) return {s, Filter_stage::interval};
+    return {internal::exact_orientation_2(p.x, p.y, q.x, q.y, r.x, r.y), Filter_stage::exact};
+  }
+  [[gnu::noinline]] static std::pair<Certified_sign, Filter_stage> after_semi_static_3(
+      const Point_3& p, const Point_3& q, const Point_3& r, const Point_3& s) {
+    const std::array<double, 12> c{p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z, s.x, s.y, s.z};
+    for (double v : c)
+      if (!std::isfinite(v)) return {Certified_sign::uncertain, Filter_stage::undecidable};
+    const Certified_sign o = internal::orientation_3_determinant<Interval>(
+                                 p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z, s.x, s.y, s.z)
+                                 .sign();
+    if (is_certain(o)) return {o, Filter_stage::interval};
+    return {internal::exact_orientation_3(c), Filter_stage::exact};
+  }
+};
+
+}  // namespace relgeo

@@ -1,0 +1,73 @@
+// relgeo/kernel/naive_kernel.h — plain floating point: the unreliable baseline.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <type_traits>
+
+#include "relgeo/kernel/floating_point.h"
+#include "relgeo/kernel/internal/determinants.h"
+#include "relgeo/kernel/internal/kernel_base.h"
+#include "relgeo/kernel/internal/semi_static_filter.h"
+
+namespace relgeo {
+
+/// \brief Kernel computing every predicate in the floating-point type T and
+/// returning the sign of whatever it computed, right or wrong.
+///
+/// It never answers `uncertain`: that is its purpose, it shows what happens to
+/// an algorithm fed with unreliable predicates (Kettner et al., "Classroom
+/// examples of robustness problems in geometric computations", 2008).
+/// The determinants are the ones of internal/determinants.h, so with
+/// -ffp-contract=off `Naive_kernel<double>` agrees bit for bit with
+/// `CGAL::Simple_cartesian<double>`.
+///
+/// \tparam T float, double or long double.
+/// \cgalModels{Kernel}
+template <class T>
+  requires std::is_floating_point_v<T>
+class Naive_kernel : public internal::Kernel_base<Naive_kernel<T>, T> {
+  using Base = internal::Kernel_base<Naive_kernel<T>, T>;
+  using C = internal::Orientation_filter_constants<T>;
+
+ public:
+  using typename Base::FT;
+  using typename Base::Point_2;
+  using typename Base::Point_3;
+
+  static std::string name() {
+    if constexpr (std::is_same_v<T, float>) return "float";
+    else if constexpr (std::is_same_v<T, double>) return "double";
+    else return "long-double";
+  }
+  static constexpr double unit_roundoff = static_cast<double>(unit_roundoff_v<T>);
+  static constexpr bool is_certified = false;
+  static constexpr bool has_exact_predicates = false;
+  static constexpr bool has_exact_constructions = false;
+  /// Forward-error constants: |computed - exact| <= eps * Mx * My (* Mz),
+  /// where the kernel *could* be wrong (see semi_static_filter.h).
+  static constexpr std::optional<double> orientation_2_error_bound = round_up_to_double(C::eps_2);
+  static constexpr std::optional<double> orientation_3_error_bound = round_up_to_double(C::eps_3);
+
+  static FT from_double(double v) { return static_cast<FT>(v); }
+  static Certified_sign compare_ft(const FT& a, const FT& b) {
+    return a < b ? Certified_sign::negative : (b < a ? Certified_sign::positive : Certified_sign::zero);
+  }
+
+  struct Orientation_2 {
+    Certified_sign operator()(const Point_2& p, const Point_2& q, const Point_2& r) const {
+      return sign_of(internal::orientation_2_determinant<T>(p.x, p.y, q.x, q.y, r.x, r.y));
+    }
+  };
+  struct Orientation_3 {
+    Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r,
+                              const Point_3& s) const {
+      return sign_of(internal::orientation_3_determinant<T>(p.x, p.y, p.z, q.x, q.y, q.z, r.x,
+                                                            r.y, r.z, s.x, s.y, s.z));
+    }
+  };
+  Orientation_2 orientation_2_object() const { return {}; }
+  Orientation_3 orientation_3_object() const { return {}; }
+};
+
+}  // namespace relgeo

@@ -54,6 +54,14 @@ constexpr std::string_view to_string(Certified_sign s) noexcept {
   return "?";
 }
 
+/// Streams the sign's name (for tests and logs); any stream that takes a string_view.
+template <class Stream>
+  requires requires(Stream& os, std::string_view v) { os << v; }
+Stream& operator<<(Stream& os, Certified_sign s) {
+  os << to_string(s);
+  return os;
+}
+
 /// `certainly(s, v)`: the kernel has decided that the sign is v.
 constexpr bool certainly(Certified_sign s, Certified_sign v) noexcept { return s == v; }
 /// `possibly(s, v)`: the sign may be v (it is v, or the kernel does not know).

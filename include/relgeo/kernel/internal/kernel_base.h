@@ -9,7 +9,9 @@
 // coplanar_orientationC3 is) and the simple constructions.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <type_traits>
 #include <span>
 
 #include "relgeo/core/errors.h"
@@ -17,6 +19,24 @@
 #include "relgeo/kernel/point.h"
 
 namespace relgeo::internal {
+
+/// Whether a coordinate is a finite number (exact and MPFR coordinates built
+/// by relgeo always are: their construction refuses non-finite doubles).
+template <class FT>
+bool is_finite_value(const FT& v) {
+  if constexpr (std::is_floating_point_v<FT>) return std::isfinite(v);
+  else if constexpr (requires { v.inf(); v.sup(); }) return std::isfinite(v.inf()) && std::isfinite(v.sup());
+  else return true;
+}
+
+/// Certified comparison of two IEEE values: `uncertain` when either is NaN.
+template <class T>
+constexpr Certified_sign compare_certified(T a, T b) {
+  if (a < b) return Certified_sign::negative;
+  if (b < a) return Certified_sign::positive;
+  if (a == b) return Certified_sign::zero;
+  return Certified_sign::uncertain;
+}
 
 template <class Derived, class FT_>
 class Kernel_base {
@@ -41,6 +61,7 @@ class Kernel_base {
   /// Lexicographic comparison of (x, y): negative when p < q.
   struct Compare_xy_2 {
     Certified_sign operator()(const Point_2& p, const Point_2& q) const {
+      if (refuses(p) || refuses(q)) return Certified_sign::uncertain;
       const Certified_sign sx = Derived::compare_ft(p.x, q.x);
       return sx == Certified_sign::zero ? Derived::compare_ft(p.y, q.y) : sx;
     }
@@ -57,6 +78,7 @@ class Kernel_base {
   /// `uncertain` as soon as a projected orientation it depends on is.
   struct Coplanar_orientation_3 {
     Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r) const {
+      if (refuses(p) || refuses(q) || refuses(r)) return Certified_sign::uncertain;
       for (int plane = 0; plane < 3; ++plane) {
         const Certified_sign o = orient(plane, p, q, r);
         if (o != Certified_sign::zero || plane == 2) return o;
@@ -65,6 +87,7 @@ class Kernel_base {
     }
     Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r,
                               const Point_3& s) const {
+      if (refuses(p) || refuses(q) || refuses(r) || refuses(s)) return Certified_sign::uncertain;
       for (int plane = 0; plane < 3; ++plane) {
         const Certified_sign o = orient(plane, p, q, r);
         if (o == Certified_sign::uncertain) return o;
@@ -131,6 +154,19 @@ class Kernel_base {
   };
 
   Construct_point_2 construct_point_2_object() const { return {}; }
+
+  /// Certified kernels give no definite answer about points with a NaN or
+  /// infinite coordinate, even where a projection or the first coordinate of a
+  /// lexicographic comparison would not look at it (naive kernels just answer).
+  static bool refuses(const Point_2& p) {
+    if constexpr (Derived::is_certified) return !(is_finite_value(p.x) && is_finite_value(p.y));
+    else return false;
+  }
+  static bool refuses(const Point_3& p) {
+    if constexpr (Derived::is_certified)
+      return !(is_finite_value(p.x) && is_finite_value(p.y) && is_finite_value(p.z));
+    else return false;
+  }
   Construct_point_3 construct_point_3_object() const { return {}; }
   Compare_xy_2 compare_xy_2_object() const { return {}; }
   Coplanar_orientation_3 coplanar_orientation_3_object() const { return {}; }
@@ -140,14 +176,5 @@ class Kernel_base {
   Compute_squared_distance_2 compute_squared_distance_2_object() const { return {}; }
   Compute_squared_distance_3 compute_squared_distance_3_object() const { return {}; }
 };
-
-/// Certified comparison of two IEEE values: `uncertain` when either is NaN.
-template <class T>
-constexpr Certified_sign compare_certified(T a, T b) {
-  if (a < b) return Certified_sign::negative;
-  if (b < a) return Certified_sign::positive;
-  if (a == b) return Certified_sign::zero;
-  return Certified_sign::uncertain;
-}
 
 }  // namespace relgeo::internal

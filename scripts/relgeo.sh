@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# relgeo's one entry point for machines: installs what is missing, builds, runs.
+#
+#   bash scripts/relgeo.sh experiment   # deps + Release build + `relgeo experiment` (the main job)
+#   bash scripts/relgeo.sh test         # deps + Release build + all tests + sanitizer subset
+#   bash scripts/relgeo.sh sanitize     # deps + ASan/UBSan build of the kernel tests only
+#
+# Debian 12. Missing apt packages are installed when run as root (or through
+# sudo when it exists). Environment: RELGEO_BUILD_DIR (default build),
+# RELGEO_RESULTS (default results), RELGEO_JOBS (default: number of cores).
+set -euo pipefail
+
+cd "$(dirname "$0")/.."
+root=$(pwd)
+build=${RELGEO_BUILD_DIR:-$root/build}
+jobs=${RELGEO_JOBS:-$(nproc)}
+
+# What each package is for: README.md, section "Dependencies".
+packages=(
+  build-essential cmake pkg-config ccache
+  libgmp-dev libmpfr-dev
+  libcgal-dev libboost-dev libeigen3-dev libtbb-dev
+  libgtest-dev libbenchmark-dev
+  libcli11-dev nlohmann-json3-dev libstb-dev
+)
+
+log() { printf '[relgeo] %s\n' "$*" >&2; }
+
+install_missing() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if ((${#missing[@]} == 0)); then
+    log "all dependencies present"
+    return
+  fi
+  log "installing: ${missing[*]}"
+  local sudo=()
+  if [[ $(id -u) -ne 0 ]]; then
+    if command -v sudo >/dev/null; then sudo=(sudo); else
+      log "error: missing packages (${missing[*]}) and not root: run as root"; exit 2
+    fi
+  fi
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+configure() {  # $1 build dir, rest: extra cmake args
+  local dir=$1; shift
+  cmake -S "$root" -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+}
+
+run_experiment() {
+  configure "$build"
+  cmake --build "$build" --target relgeo_tool -j "$jobs"
+  local out=${RELGEO_RESULTS:-$root/results}
+  "$build/tools/relgeo/relgeo" experiment --output "$out"
+  log "results in $out"
+}
+
+run_sanitized_tests() {
+  local dir=$build-asan
+  configure "$dir" -DRELGEO_SANITIZE=ON -DRELGEO_BUILD_BENCHMARKS=OFF -DRELGEO_BUILD_TOOLS=OFF \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo
+  cmake --build "$dir" --target relgeo_kernel_tests relgeo_kernel_cgal_tests relgeo_kernel_soundness_tests -j "$jobs"
+  # A twentieth of the soundness inputs: the sanitizers check memory and UB, the
+  # full-size run above checks the figures.
+  (cd "$dir" && RELGEO_TEST_SCALE=0.05 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+     ctest --output-on-failure -j "$jobs" -L kernel)
+}
+
+run_tests() {
+  configure "$build"
+  cmake --build "$build" -j "$jobs"
+  (cd "$build" && ctest --output-on-failure -j "$jobs")
+  run_sanitized_tests
+}
+
+case "${1:-}" in
+  experiment) install_missing; run_experiment ;;
+  test) install_missing; run_tests ;;
+  sanitize) install_missing; run_sanitized_tests ;;
+  *) echo "usage: bash scripts/relgeo.sh experiment|test|sanitize" >&2; exit 2 ;;
+esac

@@ -1,0 +1,79 @@
+// Interval arithmetic: every result encloses the exact result of the exact
+// operands (checked with GMP rationals), exact operations stay exact.
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "relgeo/kernel/interval.h"
+
+namespace relgeo {
+namespace {
+
+bool encloses(const Interval& i, const mpq_class& v) {
+  if (std::isnan(i.inf()) || std::isnan(i.sup())) return true;  // NaN claims nothing
+  const bool lo_ok = std::isinf(i.inf()) ? i.inf() < 0 : mpq_class(i.inf()) <= v;
+  const bool hi_ok = std::isinf(i.sup()) ? i.sup() > 0 : v <= mpq_class(i.sup());
+  return lo_ok && hi_ok;
+}
+
+double random_double(std::mt19937_64& g) {
+  // Random sign, exponent in [-1074, 1000] and mantissa: covers subnormals.
+  const int e = static_cast<int>(g() % 2075) - 1074;
+  const double m = 1.0 + static_cast<double>(g() >> 12) * 0x1p-52;
+  const double v = std::ldexp(m, e);
+  return (g() & 1) ? -v : v;
+}
+
+TEST(Interval, PointOperationsEncloseTheExactResult) {
+  std::mt19937_64 g(7);
+  for (int i = 0; i < 200000; ++i) {
+    const double a = random_double(g);
+    const double b = (i % 3 == 0) ? std::ldexp(a, static_cast<int>(g() % 8)) : random_double(g);
+    const Interval A(a), B(b);
+    const mpq_class qa(a), qb(b);
+    ASSERT_TRUE(encloses(A + B, qa + qb)) << a << " + " << b;
+    ASSERT_TRUE(encloses(A - B, qa - qb)) << a << " - " << b;
+    ASSERT_TRUE(encloses(A * B, qa * qb)) << a << " * " << b;
+  }
+}
+
+TEST(Interval, WideOperationsEncloseAllEndpointCombinations) {
+  std::mt19937_64 g(9);
+  std::uniform_real_distribution<double> d(-10, 10);
+  for (int i = 0; i < 50000; ++i) {
+    double a0 = d(g), a1 = d(g), b0 = d(g), b1 = d(g);
+    if (a0 > a1) std::swap(a0, a1);
+    if (b0 > b1) std::swap(b0, b1);
+    const Interval A(a0, a1), B(b0, b1);
+    for (double x : {a0, a1})
+      for (double y : {b0, b1}) {
+        ASSERT_TRUE(encloses(A * B, mpq_class(x) * mpq_class(y)));
+        ASSERT_TRUE(encloses(A + B, mpq_class(x) + mpq_class(y)));
+        ASSERT_TRUE(encloses(A - B, mpq_class(x) - mpq_class(y)));
+      }
+  }
+}
+
+TEST(Interval, ExactOperationsStayPoints) {
+  EXPECT_TRUE((Interval(12.0) - Interval(0.5)).is_point());   // exact difference
+  EXPECT_TRUE((Interval(11.5) * Interval(2.0)).is_point());   // exact product
+  EXPECT_EQ((Interval(3.0) - Interval(3.0)).sign(), Certified_sign::zero);
+  EXPECT_EQ((Interval(0.0) * Interval(1e300, 1e301)).sign(), Certified_sign::zero);
+  EXPECT_FALSE((Interval(0.1) * Interval(0.1)).is_point());   // inexact product is widened
+}
+
+TEST(Interval, NanAndInfinityAreNeverDefinite) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ((Interval(nan) + Interval(1.0)).sign(), Certified_sign::uncertain);
+  EXPECT_EQ((Interval(nan) * Interval(0.0)).sign(), Certified_sign::uncertain);
+  EXPECT_EQ((Interval(inf) - Interval(inf)).sign(), Certified_sign::uncertain);
+  EXPECT_EQ(compare(Interval(1.0, 2.0), Interval(1.5)), Certified_sign::uncertain);
+  EXPECT_EQ(compare(Interval(1.0, 2.0), Interval(2.5)), Certified_sign::negative);
+}
+
+}  // namespace
+}  // namespace relgeo

@@ -1,0 +1,66 @@
+// tools/relgeo/experiment.h — the framework of `relgeo experiment`.
+//
+// The experiment is a list of sections run in order. A section is one
+// function: it receives the context (output folder, size of the run, a
+// progress callback), writes its pictures under `ctx.section_dir()`, and
+// returns its report: a JSON document (written to DIR/<name>.json by the
+// framework) and the text tables printed on stdout. Failures it lists (e.g. a
+// soundness violation) make the tool exit with 1 after every section ran.
+//
+// To add a section:
+//   1. write `Section_report my_section(const Experiment_context&)` in its own
+//      experiment_<name>.cpp (and add the file to CMakeLists.txt),
+//   2. declare it below and add one line to `experiment_sections`.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "json_output.h"
+
+namespace relgeo::tool {
+
+struct Experiment_context {
+  std::filesystem::path output_dir;  ///< DIR (exists)
+  std::string section;               ///< name of the running section
+  bool quick = false;                ///< --quick: smaller workloads
+  std::size_t workload_size = 100000;  ///< cases per workload (10000 with --quick)
+  double min_timing_seconds = 0.02;  ///< repeat timed loops at least this long
+  std::function<void(const std::string&)> progress;  ///< one progress line (stderr)
+
+  /// DIR/<section>/, created on first use: where the section's pictures go.
+  std::filesystem::path section_dir() const;
+  /// `path` relative to DIR (for references inside the JSON files).
+  std::string relative(const std::filesystem::path& path) const;
+};
+
+struct Section_report {
+  Json json;                          ///< the section's numbers (DIR/<section>.json)
+  std::string text;                   ///< tables for stdout (--format text)
+  std::vector<std::string> failures;  ///< one line each; non-empty -> exit 1
+};
+
+using Section_function = Section_report (*)(const Experiment_context&);
+
+struct Experiment_section {
+  std::string_view name;
+  std::string_view summary;  ///< one line for `relgeo help experiment`
+  Section_function run;
+};
+
+// ---- the sections ------------------------------------------------------------
+/// Kernel comparison: Kettner grids and predicate workloads under every kernel.
+Section_report kernels_section(const Experiment_context& ctx);  // experiment_kernels.cpp
+
+/// Every section, in run order.
+inline constexpr Experiment_section experiment_sections[] = {
+    {"kernels", "orientation grids and predicate workloads under every kernel: wrong answers, "
+                "uncertain rate, time per predicate",
+     &kernels_section},
+};
+
+}  // namespace relgeo::tool

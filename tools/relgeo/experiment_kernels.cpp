@@ -1,0 +1,202 @@
+// tools/relgeo/experiment_kernels.cpp — the "kernels" section of `relgeo
+// experiment`: every kernel of the tool on
+//  (1) the three orientation grids of Kettner et al. (SPEC Sec. 3.1), with a
+//      picture per kernel and grid;
+//  (2) the standard orientation_2 / orientation_3 workloads: wrong answers
+//      against the exact signs, rate of `uncertain`, time per predicate.
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "experiment.h"
+#include "kernel_names.h"
+#include "kernel_runs.h"
+#include "png_writer.h"
+#include "relgeo/analysis/predicate_workloads.h"
+#include "relgeo/analysis/sign_tally.h"
+#include "tool_common.h"
+
+namespace relgeo::tool {
+
+namespace {
+
+constexpr int grid_size = 256;
+constexpr int grid_scale = 2;
+/// Slow kernels run on the first workload_size / slow_divisor cases.
+constexpr std::size_t slow_divisor = 10;
+
+/// Adds the counts of a tally to a JSON record (`cases_key`: "cases" or "cells").
+void add_tally(Json& j, const analysis::Sign_tally& t, const char* cases_key) {
+  j[cases_key] = t.cases;
+  j["wrong"] = t.wrong();
+  j["plus_to_zero"] = t.plus_to_zero;
+  j["minus_to_zero"] = t.minus_to_zero;
+  j["zero_to_sign"] = t.zero_to_sign;
+  j["inversions"] = t.inversions;
+  j["uncertain"] = t.uncertain;
+  j["correct"] = t.correct;
+}
+
+std::string rate_text(double rate) {
+  if (rate == 0) return "0";
+  return format_g(rate * 100, 3) + "%";
+}
+
+/// The wrong count, flagged when a certified kernel has any.
+std::string wrong_text(std::size_t wrong, bool certified) {
+  return std::to_string(wrong) + (certified && wrong > 0 ? " !" : "");
+}
+
+// ---- (1) the grids ----------------------------------------------------------
+
+void run_grids(const Experiment_context& ctx, const std::vector<Kernel_info>& kernels,
+               Section_report& rep) {
+  const std::filesystem::path dir = ctx.section_dir();
+  Json records = Json::array();
+  std::string text;
+  for (const auto& triple : analysis::kettner_grid_triples()) {
+    Text_table tab({"kernel", "certified", "wrong", "plus_to_zero", "minus_to_zero",
+                    "zero_to_sign", "inversions", "uncertain", "correct"});
+    for (const auto& k : kernels) {
+      ctx.progress("grid " + triple.name + ": " + k.name);
+      const auto g = evaluate_grid(k.name, triple, grid_size);
+      const auto& t = g.tally;
+      const std::filesystem::path png = dir / ("grid_" + triple.name + "_" + k.name + ".png");
+      write_png(png.string(), orientation_grid_image(g.answers, g.exact, g.size, grid_scale));
+      tab.add_row({k.name, k.certified ? "yes" : "no", wrong_text(t.wrong(), k.certified),
+                   std::to_string(t.plus_to_zero), std::to_string(t.minus_to_zero),
+                   std::to_string(t.zero_to_sign), std::to_string(t.inversions),
+                   std::to_string(t.uncertain), std::to_string(t.correct)});
+      Json r;
+      r["triple"] = triple.name;
+      r["kernel"] = k.name;
+      r["certified"] = k.certified;
+      r["size"] = g.size;
+      add_tally(r, t, "cells");
+      r["png"] = ctx.relative(png);
+      records.push_back(std::move(r));
+      if (k.certified && t.wrong() > 0)
+        rep.failures.push_back("soundness violation: certified kernel " + k.name + " gave " +
+                               std::to_string(t.wrong()) + " wrong answers on grid " + triple.name);
+    }
+    text += "Orientation grid " + triple.name + ": p = " + format_point_17(triple.px, triple.py) +
+            ", q = " + format_point_17(triple.qx, triple.qy) + ", r = " +
+            format_point_17(triple.rx, triple.ry) + "\n" + std::to_string(grid_size) + " x " +
+            std::to_string(grid_size) + " cells p + (X, Y) * 2^-53; pictures " +
+            ctx.relative(dir) + "/grid_" + triple.name + "_<kernel>.png\n\n" + tab.str() + "\n";
+  }
+  Json triples = Json::array();
+  for (const auto& t : analysis::kettner_grid_triples()) {
+    Json j;
+    j["name"] = t.name;
+    j["p"] = json_point(t.px, t.py);
+    j["q"] = json_point(t.qx, t.qy);
+    j["r"] = json_point(t.rx, t.ry);
+    triples.push_back(std::move(j));
+  }
+  rep.json["grid_size"] = grid_size;
+  rep.json["grid_triples"] = std::move(triples);
+  rep.json["grids"] = std::move(records);
+  rep.text += text;
+}
+
+// ---- (2) the workloads --------------------------------------------------------
+
+template <class Case, class Measure>
+void run_workloads(const Experiment_context& ctx, const std::vector<Kernel_info>& kernels,
+                   const std::string& predicate,
+                   const std::vector<analysis::Workload<Case>>& workloads, Measure measure,
+                   Json& records, Section_report& rep) {
+  std::vector<std::vector<Certified_sign>> exact;
+  for (const auto& w : workloads) {
+    ctx.progress(predicate + ": exact signs of workload " + w.name);
+    exact.push_back(analysis::exact_signs<Case>(w.cases));
+  }
+  const std::size_t n = ctx.workload_size, n_slow = n / slow_divisor;
+
+  std::vector<std::string> header = {"kernel", "certified", "cases"};
+  std::vector<std::pair<std::string, std::size_t>> groups = {{"", 3}};
+  for (const auto& w : workloads) {
+    header.insert(header.end(), {"wrong", "uncertain", "ns"});
+    groups.push_back({w.name, 3});
+  }
+  header.insert(header.end(), {"wrong", "uncertain"});
+  groups.push_back({"all", 2});
+  Text_table tab(header);
+  tab.set_groups(groups);
+
+  for (const auto& k : kernels) {
+    ctx.progress(predicate + ": " + k.name);
+    const std::size_t used = k.slow ? n_slow : n;
+    std::vector<std::string> row = {k.name + (k.slow ? " *" : ""), k.certified ? "yes" : "no",
+                                    std::to_string(used)};
+    analysis::Sign_tally all;
+    for (std::size_t i = 0; i < workloads.size(); ++i) {
+      const std::size_t m = std::min(used, workloads[i].cases.size());
+      const auto cases = std::span<const Case>(workloads[i].cases).first(m);
+      const auto signs = std::span<const Certified_sign>(exact[i]).first(m);
+      const Workload_measurement r = measure(k.name, cases, signs, ctx.min_timing_seconds);
+      all += r.tally;
+      row.insert(row.end(), {wrong_text(r.tally.wrong(), k.certified),
+                             rate_text(r.tally.uncertain_rate()), format_fixed(r.ns_per_predicate, 1)});
+      Json j;
+      j["predicate"] = predicate;
+      j["kernel"] = k.name;
+      j["certified"] = k.certified;
+      j["workload"] = workloads[i].name;
+      j["slow_subset"] = k.slow;
+      add_tally(j, r.tally, "cases");
+      j["uncertain_rate"] = r.tally.uncertain_rate();
+      j["ns_per_predicate"] = r.ns_per_predicate;
+      j["timed_evaluations"] = r.timed_evaluations;
+      records.push_back(std::move(j));
+      if (k.certified && r.tally.wrong() > 0)
+        rep.failures.push_back("soundness violation: certified kernel " + k.name + " gave " +
+                               std::to_string(r.tally.wrong()) + " wrong answers on " + predicate +
+                               " workload " + workloads[i].name);
+    }
+    row.insert(row.end(), {wrong_text(all.wrong(), k.certified), rate_text(all.uncertain_rate())});
+    tab.add_row(std::move(row));
+  }
+  rep.text += predicate + " on the standard workloads: " + std::to_string(n) +
+              " cases each; wrong = definite answers differing from the exact sign, "
+              "uncertain = rate of 'uncertain', ns = time per predicate (points prebuilt)\n"
+              "* slow kernel: first " + std::to_string(n_slow) +
+              " cases of each workload; ! = soundness violation\n\n" + tab.str() + "\n";
+}
+
+}  // namespace
+
+Section_report kernels_section(const Experiment_context& ctx) {
+  Section_report rep;
+  std::vector<Kernel_info> kernels;
+  Json kernel_list = Json::array();
+  for (const auto& e : kernel_entries()) {
+    kernels.push_back(kernel_info(e.name));
+    const auto& k = kernels.back();
+    Json j;
+    j["name"] = k.name;
+    j["model"] = k.model;
+    j["certified"] = k.certified;
+    j["exact_predicates"] = k.exact_predicates;
+    j["slow"] = k.slow;
+    kernel_list.push_back(std::move(j));
+  }
+  rep.json["kernels"] = std::move(kernel_list);
+  rep.json["slow_kernel_cases"] = ctx.workload_size / slow_divisor;
+
+  run_grids(ctx, kernels, rep);
+
+  Json records = Json::array();
+  run_workloads<analysis::Orientation_2_case>(ctx, kernels, "orientation_2",
+                                              analysis::standard_workloads_2(ctx.workload_size),
+                                              &measure_orientation_2, records, rep);
+  run_workloads<analysis::Orientation_3_case>(ctx, kernels, "orientation_3",
+                                              analysis::standard_workloads_3(ctx.workload_size),
+                                              &measure_orientation_3, records, rep);
+  rep.json["workloads"] = std::move(records);
+  return rep;
+}
+
+}  // namespace relgeo::tool

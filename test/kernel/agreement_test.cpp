@@ -51,7 +51,7 @@ TEST(Agreement, Mpfr53IsNaiveDoubleAwayFromUnderflowAndOverflow) {
       ++compared;
     }
   }
-  EXPECT_GT(compared, 100000u);
+  EXPECT_GT(compared, d.orientation_2.cases.size() / 20);  // every 7th case of 5 of 7 families
   EXPECT_EQ(differ, 0u);
 }
 

@@ -1,10 +1,11 @@
 # check_tool_run.cmake — runs the relgeo tool once and checks the contract:
 #   cmake -DTOOL=... -DARGS=a;b;c -DEXPECT_CODE=N [-DSTDOUT_MATCHES=re1;re2]
-#         [-DFILES=f1;f2] -P check_tool_run.cmake
-# Fails unless the exit code is EXPECT_CODE, stdout matches every regex and
-# every file in FILES exists (removed first). For exit code 2, stderr must be
+#         [-DFILES=f1;f2] [-DJSON_FILES=f1;f2] [-DSTDOUT_JSON=ON] -P check_tool_run.cmake
+# Fails unless the exit code is EXPECT_CODE, stdout matches every regex,
+# every file in FILES exists (removed first), every file in JSON_FILES and,
+# with STDOUT_JSON, stdout parse as JSON. For exit code 2, stderr must be
 # exactly one line starting with "relgeo: error: ". Lists are joined with "@@".
-foreach(v ARGS STDOUT_MATCHES FILES)
+foreach(v ARGS STDOUT_MATCHES FILES JSON_FILES)
   string(REPLACE "@@" ";" ${v} "${${v}}")
 endforeach()
 foreach(f IN LISTS FILES)
@@ -34,5 +35,18 @@ foreach(f IN LISTS FILES)
   if(NOT EXISTS "${f}")
     message(FATAL_ERROR "relgeo ${ARGS}: file ${f} was not written")
   endif()
+endforeach()
+function(check_json text what)
+  string(JSON type ERROR_VARIABLE json_error TYPE "${text}")
+  if(json_error OR NOT type STREQUAL "OBJECT")
+    message(FATAL_ERROR "relgeo ${ARGS}: ${what} is not a JSON object: ${json_error}")
+  endif()
+endfunction()
+if(STDOUT_JSON)
+  check_json("${out}" "stdout")
+endif()
+foreach(f IN LISTS JSON_FILES)
+  file(READ "${f}" content)
+  check_json("${content}" "${f}")
 endforeach()
 message(STATUS "relgeo ${ARGS}: exit ${code} as expected")

@@ -29,7 +29,11 @@ struct Experiment_context {
   std::string section;               ///< name of the running section
   bool quick = false;                ///< --quick: smaller workloads
   std::size_t workload_size = 100000;  ///< cases per workload (10000 with --quick)
-  double min_timing_seconds = 0.02;  ///< repeat timed loops at least this long
+  /// Slow kernels (Kernel_entry::slow: exact, mpfr-*, cgal-epeck) use only the
+  /// first this many cases of each workload: all of them in the default run
+  /// (it fits in well under a minute), a tenth with --quick.
+  std::size_t slow_kernel_cases = 100000;
+  double min_timing_seconds = 0.05;  ///< repeat timed loops at least this long
   std::function<void(const std::string&)> progress;  ///< one progress line (stderr)
 
   /// DIR/<section>/, created on first use: where the section's pictures go.

@@ -4,8 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
-#include <iomanip>
-#include <iostream>
+#include <ostream>
 #include <system_error>
 
 #include "commands.h"
@@ -77,7 +76,8 @@ int run_experiment(const Experiment_options& o, std::ostream& out, std::ostream&
   ctx.output_dir = dir;
   ctx.quick = o.quick;
   ctx.workload_size = o.quick ? 10000 : 100000;
-  ctx.min_timing_seconds = o.quick ? 0.002 : 0.02;
+  ctx.slow_kernel_cases = o.quick ? ctx.workload_size / 10 : ctx.workload_size;
+  ctx.min_timing_seconds = o.quick ? 0.002 : 0.05;
 
   Json all;
   all["output"] = dir.generic_string();
@@ -95,8 +95,8 @@ int run_experiment(const Experiment_options& o, std::ostream& out, std::ostream&
     const auto section_start = Clock::now();
     ctx.progress = [&, name = ctx.section](const std::string& line) {
       if (!o.quiet)
-        err << "[" << name << " " << std::fixed << std::setprecision(1)
-            << seconds_since(start) << "s] " << line << std::endl;
+        err << "[" << name << " " << format_fixed(seconds_since(start), 1) << "s] " << line
+            << std::endl;
     };
     ctx.progress("start");
     Section_report rep = sec.run(ctx);

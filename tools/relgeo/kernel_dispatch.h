@@ -2,7 +2,7 @@
 //
 // Heavy: includes every kernel, CGAL's Epeck among them. Include it only in
 // the translation units that instantiate algorithms under every kernel
-// (grid_eval.cpp, workload_eval.cpp, kernel_info.cpp); everything else uses
+// (grid_eval.cpp, workload_eval.cpp); everything else uses
 // kernel_names.h and the non-template functions of those units.
 #pragma once
 

@@ -18,7 +18,7 @@ inline constexpr std::array<int, 9> mpfr_bits = {11, 24, 53, 64, 80, 106, 113, 1
 struct Kernel_entry {
   std::string name;         ///< command-line name ("double", "mpfr-53", "cgal-epeck"...)
   std::string description;  ///< one line for the help text
-  bool slow;                ///< the experiment uses n/10 cases of each workload
+  bool slow;                ///< `relgeo experiment --quick` gives it n/10 cases of each workload
 };
 
 /// Every kernel, in the order of the help text and of the experiment tables

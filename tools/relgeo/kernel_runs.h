@@ -36,13 +36,14 @@ analysis::Orientation_grid_result evaluate_grid(std::string_view kernel,
 /// time per predicate.
 struct Workload_measurement {
   analysis::Sign_tally tally;
-  double ns_per_predicate = 0;  ///< wall time of the predicate loop / evaluations
-  std::size_t timed_evaluations = 0;  ///< evaluations timed (the loop may be repeated)
+  double ns_per_predicate = 0;  ///< wall time per predicate of the fastest timed pass
+  std::size_t timed_evaluations = 0;  ///< evaluations timed (passes x cases)
 };
 
 /// Evaluates the named kernel's orientation_2 on every case (points built
 /// first, not timed), repeating the timed loop until `min_seconds` have passed
-/// (at least once), and tallies the answers against `exact`.  [workload_eval.cpp]
+/// (at least once; the fastest pass counts), and tallies the answers against
+/// `exact`.  [workload_eval.cpp]
 Workload_measurement measure_orientation_2(std::string_view kernel,
                                            std::span<const analysis::Orientation_2_case> cases,
                                            std::span<const Certified_sign> exact,

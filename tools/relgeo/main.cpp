@@ -26,7 +26,6 @@ const char* const exit_codes_text =
 void add_format_option(CLI::App& cmd, std::string& format) {
   cmd.add_option("--format", format, "output format on stdout: text (default) or json")
       ->check(CLI::IsMember({"json", "text"}))
-      ->type_name("json|text")
       ->default_str("text");
 }
 
@@ -71,8 +70,7 @@ int run(int argc, char** argv) {
   og->add_option("--q", grid.q, "the point q")->type_name("X,Y");
   og->add_option("--r", grid.r, "the point r")->type_name("X,Y");
   og->add_option("--triple", grid.triple, "the p, q, r of Kettner et al.'s grids (instead of --p --q --r)")
-      ->check(CLI::IsMember({"a", "b", "c"}))
-      ->type_name("a|b|c");
+      ->check(CLI::IsMember({"a", "b", "c"}));
   og->add_option("--kernel", grid.kernel, "the kernel (listed by 'relgeo help')")
       ->required()
       ->type_name("KERNEL");
@@ -111,8 +109,8 @@ int run(int argc, char** argv) {
              "DIR/<section>/ (kernels: grid_<triple>_<kernel>.png).\n"
              "Kernels section: the three 256x256 grids under every kernel; orientation_2 and "
              "orientation_3 on the standard workloads (uniform, near-degenerate, extreme "
-             "magnitudes, degenerate) against exact signs. Slow kernels (exact, mpfr-*, "
-             "cgal-epeck) use the first tenth of each workload.\n"
+             "magnitudes, degenerate) against exact signs; with --quick the slow kernels (exact, "
+             "mpfr-*, cgal-epeck) use the first tenth of each workload.\n"
              "Progress lines go to stderr.\n" + exit_codes_text);
 
   if (argc >= 2 && std::string(argv[1]) == "help") {

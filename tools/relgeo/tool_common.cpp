@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <system_error>
 
 namespace relgeo::tool {
@@ -26,9 +27,17 @@ double parse_double(std::string_view text, std::string_view what) {
   double v = 0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v,
                                          std::chars_format::general);
-  if (ec == std::errc::result_out_of_range)
-    throw Usage_error(std::string(what) + ": '" + std::string(text) +
-                      "' is out of the range of double");
+  if (ec == std::errc::result_out_of_range && end == digits.data() + digits.size()) {
+    // from_chars refuses underflow as well as overflow. A literal below the
+    // smallest subnormal rounds to (signed) zero: glibc's strtod rounds
+    // correctly and tells the two apart (HUGE_VAL on overflow).
+    const std::string copy(digits);
+    v = std::strtod(copy.c_str(), nullptr);
+    if (!std::isfinite(v))
+      throw Usage_error(std::string(what) + ": '" + std::string(text) +
+                        "' is out of the range of double");
+    return v;
+  }
   if (ec != std::errc() || end != digits.data() + digits.size())
     throw Usage_error(std::string(what) + ": '" + std::string(text) + "' is not a number");
   if (!std::isfinite(v))

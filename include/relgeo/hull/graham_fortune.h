@@ -1,0 +1,80 @@
+// relgeo/hull/graham_fortune.h — Fortune's stable Graham scan (thesis Sec. 3.3.3).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "relgeo/hull/hull_result.h"
+#include "relgeo/hull/internal/chain_scan.h"
+#include "relgeo/hull/internal/hull_support.h"
+#include "relgeo/kernel/concepts.h"
+
+namespace relgeo {
+
+/// \brief Fortune's stable Graham scan (S. Fortune, "Stable maintenance of
+/// point set triangulations in two dimensions", FOCS 1989; thesis Sec. 3.3.3).
+///
+/// 1. Sort the points lexicographically; L and R are the first and the last.
+/// 2. Split the others by the triangle test against the line LR: certainly
+///    left of L->R go to the upper candidates, certainly right to the lower
+///    candidates; an `uncertain` (or zero) answer drops the point — it lies
+///    within the test's uncertainty of segment LR, inside the hull up to that.
+/// 3. Scan each candidate chain with a stack, keeping the middle point of a
+///    triple only on a *certain* left turn (fail-safe: ambiguous points are
+///    dropped).
+///
+/// With a kernel whose definite answers are exact (Failsafe_kernel and every
+/// certified kernel), every kept triple is an exact strict turn, so the output
+/// is in strictly convex position, and every input point lies within the
+/// bound of graham_fortune_backward_error_bound (relgeo/error/hull_backward_error.h)
+/// of the output's hull: the output is the exact hull of an input perturbed by
+/// at most that much. With exact predicates it is the exact hull.
+///
+/// \tparam K an OrientationKernel_2.
+/// \return the hull (hull_result.h); special cases as for monotone_chain.
+/// \throws Non_finite_input if a coordinate is NaN or infinite.
+/// Complexity: O(n log n) comparisons + O(n) orientation tests.
+template <OrientationKernel_2 K>
+Hull_result<typename K::Point_2> graham_fortune(std::span<const typename K::Point_2> points,
+                                                const K& k = K{}) {
+  using Point = typename K::Point_2;
+  internal::require_finite_points<Point>(points, "graham_fortune");
+  Hull_result<Point> r;
+  const std::vector<std::size_t> sorted =
+      internal::sorted_distinct_indices(points, k, &r.uncertain_answers);
+  if (sorted.size() <= 2) {
+    r.indices = sorted;
+    internal::attach_points(r, points);
+    return r;
+  }
+  const std::size_t L = sorted.front(), R = sorted.back();
+  const auto orientation = k.orientation_2_object();
+  std::vector<std::size_t> lower, upper;  // candidates, in sorted order
+  for (std::size_t i = 1; i + 1 < sorted.size(); ++i) {
+    const std::size_t p = sorted[i];
+    const Certified_sign s = orientation(points[L], points[R], points[p]);
+    ++r.predicate_calls;
+    r.uncertain_answers += (s == Certified_sign::uncertain);
+    if (s == Certified_sign::positive) upper.push_back(p);
+    else if (s == Certified_sign::negative) lower.push_back(p);
+  }
+  lower.push_back(R);
+  std::vector<std::size_t> chain{L};
+  internal::scan_chain<K, Point>(lower, points, k, chain, 0, r);  // L .. R
+  const std::size_t lower_size = chain.size();
+  std::vector<std::size_t> upper_reversed(upper.rbegin(), upper.rend());
+  upper_reversed.push_back(L);
+  internal::scan_chain<K, Point>(upper_reversed, points, k, chain, lower_size - 1, r);  // R .. L
+  chain.pop_back();  // L again
+  r.indices = std::move(chain);
+  internal::attach_points(r, points);
+  return r;
+}
+
+template <OrientationKernel_2 K, class Range>
+  requires std::convertible_to<Range&, std::span<const typename K::Point_2>>
+Hull_result<typename K::Point_2> graham_fortune(const Range& points, const K& k = K{}) {
+  return graham_fortune<K>(std::span<const typename K::Point_2>(points), k);
+}
+
+}  // namespace relgeo

@@ -1,0 +1,56 @@
+// relgeo/hull/monotone_chain.h — Andrew's monotone chain algorithm.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "relgeo/hull/hull_result.h"
+#include "relgeo/hull/internal/chain_scan.h"
+#include "relgeo/hull/internal/hull_support.h"
+#include "relgeo/kernel/concepts.h"
+
+namespace relgeo {
+
+/// \brief Planar convex hull by Andrew's monotone chain (A. M. Andrew,
+/// "Another efficient algorithm for convex hulls in two dimensions", 1979):
+/// sort lexicographically, then build the lower chain left to right and the
+/// upper chain right to left with a stack, keeping a middle point only on a
+/// certain left turn (an `uncertain` answer drops it, as in graham_fortune).
+///
+/// \tparam K an OrientationKernel_2 (orientation_2, compare_xy_2).
+/// \param points the input; may be empty, contain duplicates or be collinear.
+/// \return the hull (hull_result.h); 1 index for one distinct point, the two
+///   extreme points for collinear input, nothing for empty input.
+/// \throws Non_finite_input if a coordinate is NaN or infinite.
+/// Complexity: O(n log n) comparisons + O(n) orientation tests.
+template <OrientationKernel_2 K>
+Hull_result<typename K::Point_2> monotone_chain(std::span<const typename K::Point_2> points,
+                                                const K& k = K{}) {
+  using Point = typename K::Point_2;
+  internal::require_finite_points<Point>(points, "monotone_chain");
+  Hull_result<Point> r;
+  const std::vector<std::size_t> sorted =
+      internal::sorted_distinct_indices(points, k, &r.uncertain_answers);
+  if (sorted.size() <= 2) {
+    r.indices = sorted;
+  } else {
+    std::vector<std::size_t> chain;
+    internal::scan_chain<K, Point>(sorted, points, k, chain, 0, r);  // lower, L..R
+    const std::size_t lower_size = chain.size();
+    std::vector<std::size_t> reversed(sorted.rbegin() + 1, sorted.rend());  // R-1..L
+    internal::scan_chain<K, Point>(reversed, points, k, chain, lower_size - 1, r);
+    chain.pop_back();  // L again
+    r.indices = std::move(chain);
+  }
+  internal::attach_points(r, points);
+  return r;
+}
+
+/// Overload for any contiguous range of K::Point_2 (std::vector, std::array...).
+template <OrientationKernel_2 K, class Range>
+  requires std::convertible_to<Range&, std::span<const typename K::Point_2>>
+Hull_result<typename K::Point_2> monotone_chain(const Range& points, const K& k = K{}) {
+  return monotone_chain<K>(std::span<const typename K::Point_2>(points), k);
+}
+
+}  // namespace relgeo

@@ -4,24 +4,26 @@
 // Benchmarks are named `<predicate>/<family>/<subject>`:
 //   predicate  orientation_2 | orientation_3
 //   family     uniform | near-collinear (2D) | uniform | near-coplanar (3D),
-//              kDefaultCases cases of relgeo::analysis's generators
-//   subject    a relgeo kernel's name() ("double", "failsafe<double>",
-//              "filtered", "cgal-epick" = relgeo's Cgal_kernel adapter ...), or
-//              "CGAL::<kernel>" for a CGAL functor used directly.
-// One benchmark iteration evaluates the whole batch; `time/call` and
-// `items_per_second` are per predicate call (CPU time), the ratio table printed
-// at the end uses real time per call.
+//              relgeo::analysis's generators, kDefaultCases queries each
+//   subject    a relgeo kernel's name() ("double" = Naive_kernel<double>,
+//              "failsafe<double>", "filtered", "cgal-epick" = relgeo's
+//              Cgal_kernel adapter ...), or "CGAL::<kernel>" for a CGAL
+//              functor used directly.
+// One benchmark iteration evaluates the whole batch; the `time/call` and
+// `items_per_second` columns are per predicate call (CPU time), `uncertain` is
+// the fraction of `uncertain` answers. After the runs a "ratios" table
+// divides, for every family, each subject's real time per call by that of
+// Naive_kernel<double> and of CGAL::Epick's own functor, and marks the
+// project's throughput bars PASS or MISS. It is a report: the exit status is 0
+// whatever the ratios (1 only when an argument is wrong or the filter matched
+// no benchmark).
 //
-// After the runs a "ratios" table divides, for every family, each subject's
-// time by that of Naive_kernel<double> ("double") and of CGAL::Epick's own
-// functor, and marks the project's throughput bars PASS or MISS. It is a
-// report: the exit status is 0 whatever the ratios (1 only when the filter
-// matched no benchmark or an argument is not understood).
-//
-// Defaults: --benchmark_min_time=0.2 unless given; --relgeo_cases=N sets the
-// number of queries per family (default 32768, see predicate_benchmark.h for
-// why not fewer). Any Google Benchmark flag works (--benchmark_filter, --benchmark_repetitions: the table then uses the
-// median, --benchmark_format=json: the table goes to stderr).
+// Defaults, each unless given on the command line: --benchmark_min_time=0.2
+// --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true (the
+// console then shows only the median of each benchmark; the table uses the
+// median too and shows the spread of the repetitions). Own flag: --relgeo_cases=N, queries per family (default 32768;
+// predicate_benchmark.h explains why not fewer). Every Google Benchmark flag
+// works; with --benchmark_format=json the table goes to stderr.
 #include <unistd.h>
 
 #include <algorithm>
@@ -98,63 +100,95 @@ double to_ns(double t, benchmark::TimeUnit unit) {
 /// keeps the real and CPU time per call of every run, for the ratio table.
 class Ratio_reporter : public benchmark::BenchmarkReporter {
  public:
-  Ratio_reporter(std::unique_ptr<benchmark::BenchmarkReporter> inner, std::size_t calls_per_iteration)
-      : inner_(std::move(inner)), calls_(static_cast<double>(calls_per_iteration)) {}
+  /// compact: of repeated benchmarks, show only the median (the table uses
+  /// every repetition and shows their spread).
+  Ratio_reporter(std::unique_ptr<benchmark::BenchmarkReporter> inner,
+                 std::size_t calls_per_iteration, bool compact)
+      : inner_(std::move(inner)), calls_(static_cast<double>(calls_per_iteration)),
+        compact_(compact) {}
 
   bool ReportContext(const Context& context) override { return inner_->ReportContext(context); }
   void ReportRuns(const std::vector<Run>& runs) override {
-    inner_->ReportRuns(runs);
+    if (!compact_) {
+      inner_->ReportRuns(runs);
+    } else {
+      std::vector<Run> shown;
+      for (const Run& r : runs)
+        if (r.repetitions <= 1 || r.error_occurred ||
+            (r.run_type == Run::RT_Aggregate && r.aggregate_name == "median"))
+          shown.push_back(r);
+      if (!shown.empty()) inner_->ReportRuns(shown);
+    }
     for (const Run& r : runs) {
       if (r.run_type != Run::RT_Iteration || r.error_occurred || r.iterations <= 0) continue;
       const std::string& name = r.run_name.function_name;
       auto it = std::find_if(entries_.begin(), entries_.end(),
                              [&](const Entry& e) { return e.name == name; });
-      if (it == entries_.end()) it = entries_.insert(entries_.end(), Entry{name, {}, {}});
+      if (it == entries_.end()) it = entries_.insert(entries_.end(), Entry{name, {}, {}, 0});
+      if (const auto c = r.counters.find("uncertain"); c != r.counters.end())
+        it->uncertain = c->second.value;
       it->real_ns.push_back(to_ns(r.GetAdjustedRealTime(), r.time_unit) / calls_);
       it->cpu_ns.push_back(to_ns(r.GetAdjustedCPUTime(), r.time_unit) / calls_);
     }
   }
   void Finalize() override { inner_->Finalize(); }
 
+  /// Rows and groups of the table follow this order of benchmark names
+  /// (registration order), not the order of the runs (which may be shuffled).
+  void set_order(std::vector<std::string> names) { order_ = std::move(names); }
   void print_ratios(std::ostream& out) const;
 
  private:
   struct Entry {
     std::string name;
     std::vector<double> real_ns, cpu_ns;
+    double uncertain = 0;  // fraction of `uncertain` answers on the batch
   };
   struct Row {
     std::string subject;
-    double real_ns, cpu_ns;
-    std::size_t samples;
+    double real_ns, cpu_ns, spread, uncertain;
   };
   std::unique_ptr<benchmark::BenchmarkReporter> inner_;
   double calls_;
+  bool compact_;
+  std::vector<std::string> order_;
   std::vector<Entry> entries_;  // in run order
 };
 
 void Ratio_reporter::print_ratios(std::ostream& out) const {
-  // Group "<predicate>/<family>/<subject>" by "<predicate>/<family>", in run order.
+  // Group "<predicate>/<family>/<subject>" by "<predicate>/<family>", in
+  // registration order.
+  std::vector<const Entry*> entries;
+  for (const Entry& e : entries_) entries.push_back(&e);
+  const auto rank = [&](const Entry* e) {
+    return std::find(order_.begin(), order_.end(), e->name) - order_.begin();
+  };
+  std::stable_sort(entries.begin(), entries.end(),
+                   [&](const Entry* a, const Entry* b) { return rank(a) < rank(b); });
   std::vector<std::pair<std::string, std::vector<Row>>> groups;
-  for (const Entry& e : entries_) {
-    const auto a = e.name.find('/');
-    const auto b = a == std::string::npos ? a : e.name.find('/', a + 1);
+  for (const Entry* e : entries) {
+    const auto a = e->name.find('/');
+    const auto b = a == std::string::npos ? a : e->name.find('/', a + 1);
     if (b == std::string::npos) continue;
-    const std::string group = e.name.substr(0, b), subject = e.name.substr(b + 1);
+    const std::string group = e->name.substr(0, b), subject = e->name.substr(b + 1);
     auto g = std::find_if(groups.begin(), groups.end(),
                           [&](const auto& x) { return x.first == group; });
     if (g == groups.end()) g = groups.insert(groups.end(), {group, {}});
-    g->second.push_back({subject, median(e.real_ns), median(e.cpu_ns), e.real_ns.size()});
+    const auto [lo, hi] = std::minmax_element(e->real_ns.begin(), e->real_ns.end());
+    const double real = median(e->real_ns);
+    g->second.push_back({subject, real, median(e->cpu_ns), (*hi - *lo) / real, e->uncertain});
   }
   if (groups.empty()) return;
 
   const auto flags = out.flags();
   const auto precision = out.precision();
-  out << "\nratios: real time per predicate call (median of " << entries_.front().real_ns.size()
-      << " run(s) each), divided by that of Naive_kernel<double> (\"" << kNaiveDouble
-      << "\") and of CGAL::Epick's own functor (\"" << kEpick << "\")\n";
-  out << "  subject names: relgeo kernels by name(), cgal-* = relgeo's Cgal_kernel adapter, "
-         "CGAL::* = CGAL's functor used directly\n";
+  out << "\nratios: real time per predicate call, median of " << entries.front()->real_ns.size()
+      << " run(s); /double and /Epick divide it by that of Naive_kernel<double> (\""
+      << kNaiveDouble << "\") and of CGAL::Epick's own functor (\"" << kEpick << "\").\n"
+      << "  spread = (max - min) / median of the runs' real times; real/cpu > 1.05 means the\n"
+      << "  process waited for the CPU (busy machine): trust the cpu column then.\n"
+      << "  subjects: relgeo kernels by name(), cgal-* = relgeo's Cgal_kernel adapter,\n"
+      << "  CGAL::* = CGAL's functor used directly.\n";
   for (const auto& [group, rows] : groups) {
     const auto find = [&](const char* s) -> const Row* {
       for (const Row& r : rows)
@@ -166,38 +200,44 @@ void Ratio_reporter::print_ratios(std::ostream& out) const {
     const std::string predicate = group.substr(0, group.find('/'));
     const std::string family = group.substr(group.find('/') + 1);
     out << '\n'
-        << std::left << std::setw(36) << group << std::right << std::setw(11) << "ns/call"
-        << std::setw(11) << "cpu ns" << std::setw(11) << "/double" << std::setw(11) << "/Epick"
-        << "   bar\n";
+        << std::left << std::setw(34) << group << std::right << std::setw(10) << "ns/call"
+        << std::setw(10) << "cpu ns" << std::setw(8) << "spread" << std::setw(9) << "/double"
+        << std::setw(9) << "/Epick" << std::setw(10) << "uncertain" << "   bar\n";
     for (const Row& r : rows) {
-      out << "  " << std::left << std::setw(34) << r.subject << std::right << std::fixed;
+      out << "  " << std::left << std::setw(32) << r.subject << std::right << std::fixed;
       const auto ns = [&](double v) {
-        out << std::setw(11) << std::setprecision(v < 100 ? 2 : v < 10000 ? 1 : 0) << v;
+        out << std::setw(10) << std::setprecision(v < 100 ? 2 : v < 10000 ? 1 : 0) << v;
       };
       const auto ratio = [&](const Row* ref) {
-        if (ref)
-          out << std::setw(11) << std::setprecision(r.real_ns / ref->real_ns < 100 ? 3 : 0)
-              << r.real_ns / ref->real_ns;
-        else
-          out << std::setw(11) << "n/a";
+        if (!ref) {
+          out << std::setw(9) << "n/a";
+          return;
+        }
+        const double q = r.real_ns / ref->real_ns;
+        out << std::setw(9) << std::setprecision(q < 10 ? 3 : q < 1000 ? 1 : 0) << q;
       };
       ns(r.real_ns);
       ns(r.cpu_ns);
+      out << std::setw(7) << std::setprecision(0) << 100 * r.spread << '%';
       ratio(naive);
       ratio(epick);
+      out << std::setw(9) << std::setprecision(1) << 100 * r.uncertain << '%';
       for (const Bar& bar : bars()) {
         if (bar.predicate != predicate || bar.family != family || bar.subject != r.subject)
           continue;
         const Row* ref = bar.reference == kNaiveDouble ? naive : epick;
         out << "   <= " << std::setprecision(1) << bar.limit << "x " << bar.reference << ": ";
-        if (!ref)
+        if (!ref) {
           out << "n/a (reference not run)";
-        else
-          out << (r.real_ns / ref->real_ns <= bar.limit ? "PASS" : "MISS");
+          continue;
+        }
+        const bool pass = r.real_ns / ref->real_ns <= bar.limit;
+        const bool pass_cpu = r.cpu_ns / ref->cpu_ns <= bar.limit;
+        out << (pass ? "PASS" : "MISS");
+        if (pass != pass_cpu) out << " (by cpu time: " << (pass_cpu ? "PASS" : "MISS") << ')';
       }
-      // Real time well above CPU time: the process was descheduled (machine busy).
-      if (r.real_ns > 1.05 * r.cpu_ns) out << "   (real/cpu " << std::setprecision(2)
-                                           << r.real_ns / r.cpu_ns << ": busy machine?)";
+      if (r.real_ns > 1.05 * r.cpu_ns)
+        out << "   real/cpu " << std::setprecision(2) << r.real_ns / r.cpu_ns;
       out << '\n';
     }
   }
@@ -238,11 +278,17 @@ int main(int argc, char** argv) {
   using namespace relgeo_bench;
   namespace ra = relgeo::analysis;
 
-  // Default minimum time per benchmark (Google Benchmark's own is 0.5 s, which
-  // makes the 60 benchmarks take over a minute).
+  // Defaults, each unless given: 3 repetitions of 0.2 s, randomly interleaved
+  // (so a burst of load from another process hits a repetition, not a whole
+  // benchmark), median used. About a minute in all.
   std::vector<char*> args(argv, argv + argc);
-  std::string default_min_time = "--benchmark_min_time=0.2";
-  if (!has_flag(args, "--benchmark_min_time")) args.insert(args.begin() + 1, default_min_time.data());
+  std::vector<std::string> defaults;
+  const bool default_repetitions = !has_flag(args, "--benchmark_repetitions");
+  if (!has_flag(args, "--benchmark_min_time")) defaults.push_back("--benchmark_min_time=0.2");
+  if (default_repetitions) defaults.push_back("--benchmark_repetitions=3");
+  if (!has_flag(args, "--benchmark_enable_random_interleaving"))
+    defaults.push_back("--benchmark_enable_random_interleaving=true");
+  for (std::string& d : defaults) args.insert(args.begin() + 1, d.data());
   const std::string format = flag_value(args, "--benchmark_format");
   // Our own flag, consumed before Google Benchmark sees the arguments.
   std::size_t cases = kDefaultCases;
@@ -259,8 +305,14 @@ int main(int argc, char** argv) {
                               [](const char* a) { return std::strncmp(a, "--relgeo_cases", 14) == 0; }),
                args.end());
   }
+  // Shorten the console output to the medians, unless the user asked for
+  // repetitions or aggregates, or for machine-readable output.
+  const bool compact = default_repetitions && format != "json" &&
+                       !has_flag(args, "--benchmark_display_aggregates_only") &&
+                       !has_flag(args, "--benchmark_report_aggregates_only");
+
   int n = static_cast<int>(args.size());
-  args.push_back(nullptr);
+  args.push_back(nullptr);  // argv[argc] == nullptr, as Initialize may expect
   benchmark::Initialize(&n, args.data());
   if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 1;
 
@@ -274,18 +326,24 @@ int main(int argc, char** argv) {
   for (auto&& list : {cgal_subjects(), cgal_epeck_subjects()})
     subjects.insert(subjects.end(), list.begin(), list.end());
 
+  std::vector<std::string> names;
   for (const auto& w : families_2)
-    for (const Subject& s : subjects)
-      benchmark::RegisterBenchmark(("orientation_2/" + w.name + "/" + s.name).c_str(),
+    for (const Subject& s : subjects) {
+      names.push_back("orientation_2/" + w.name + "/" + s.name);
+      benchmark::RegisterBenchmark(names.back().c_str(),
                                    [fn = s.orientation_2, &w](benchmark::State& st) { fn(st, w); })
           ->Unit(benchmark::kMicrosecond);
+    }
   for (const auto& w : families_3)
-    for (const Subject& s : subjects)
-      benchmark::RegisterBenchmark(("orientation_3/" + w.name + "/" + s.name).c_str(),
+    for (const Subject& s : subjects) {
+      names.push_back("orientation_3/" + w.name + "/" + s.name);
+      benchmark::RegisterBenchmark(names.back().c_str(),
                                    [fn = s.orientation_3, &w](benchmark::State& st) { fn(st, w); })
           ->Unit(benchmark::kMicrosecond);
+    }
 
-  Ratio_reporter reporter(make_display_reporter(format), cases);
+  Ratio_reporter reporter(make_display_reporter(format), cases, compact);
+  reporter.set_order(std::move(names));
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   reporter.print_ratios(format == "json" ? std::cerr : std::cout);
   benchmark::Shutdown();

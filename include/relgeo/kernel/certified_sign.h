@@ -17,12 +17,12 @@ enum class Certified_sign : signed char { negative = -1, zero = 0, positive = 1,
 constexpr bool is_certain(Certified_sign s) noexcept { return s != Certified_sign::uncertain; }
 
 /// The sign of an arithmetic value; NaN gives `zero` (naive kernels only use
-/// this on values they already trust, or trust blindly).
+/// this on values they already trust, or trust blindly). Computed without a
+/// branch: a predicate's sign is data-dependent, and a mispredicted branch
+/// costs more than the whole determinant (benchmark/kernel/predicate_benchmark.h).
 template <class T>
 constexpr Certified_sign sign_of(const T& v) {
-  if (v > 0) return Certified_sign::positive;
-  if (v < 0) return Certified_sign::negative;
-  return Certified_sign::zero;
+  return static_cast<Certified_sign>(static_cast<int>(v > 0) - static_cast<int>(v < 0));
 }
 
 /// Sign of a product: definite when both factors are definite, or when one is zero.

@@ -62,22 +62,26 @@ class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel
     return after_semi_static_3(p, q, r, s);
   }
 
+  // The fast path branches once, on whether the epsilon test decided (well
+  // predicted), never on the sign itself (unpredictable on random input).
   struct Orientation_2 {
     Certified_sign operator()(const Point_2& p, const Point_2& q, const Point_2& r) const {
-      const Certified_sign s =
-          internal::filtered_orientation_2<double>(p.x, p.y, q.x, q.y, r.x, r.y);
-      if (is_certain(s)) [[likely]]
-        return s;
+      const internal::Epsilon_test t =
+          internal::orientation_2_epsilon_test<double>(p.x, p.y, q.x, q.y, r.x, r.y);
+      if (t.decided) [[likely]]
+        return t.sign;
+      if (t.exact_zero) return Certified_sign::zero;
       return after_semi_static_2(p, q, r).first;
     }
   };
   struct Orientation_3 {
     Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r,
                               const Point_3& s) const {
-      const Certified_sign o = internal::filtered_orientation_3<double>(
+      const internal::Epsilon_test t = internal::orientation_3_epsilon_test<double>(
           p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z, s.x, s.y, s.z);
-      if (is_certain(o)) [[likely]]
-        return o;
+      if (t.decided) [[likely]]
+        return t.sign;
+      if (t.exact_zero) return Certified_sign::zero;
       return after_semi_static_3(p, q, r, s).first;
     }
   };

@@ -1,8 +1,9 @@
 // relgeo/kernel/interval.h — closed intervals of doubles with outward rounding.
 //
 // Each operation is evaluated in the default round-to-nearest mode and its
-// result widened by one ulp on the side of the exact value (found with TwoSum
-// and fma for sums and products of points; on both sides otherwise). This
+// result widened by (at least) one ulp on the side of the exact value (found
+// with TwoSum and TwoProduct for sums and products of points; on both sides
+// otherwise). This
 // needs no change of the global rounding mode (no fesetround, no
 // -frounding-math, nothing a client's code can disturb) and is sound because a
 // correctly rounded result lies within one ulp of the exact one, also under
@@ -69,7 +70,8 @@ class Interval {
       lo = std::min(lo, v);
       hi = std::max(hi, v);
     }
-    return {std::nextafter(lo, -kInf), std::nextafter(hi, kInf)};
+    return {std::isfinite(lo) ? down(lo) : std::nextafter(lo, -kInf),
+            std::isfinite(hi) ? up(hi) : std::nextafter(hi, kInf)};
   }
 
   Interval& operator+=(const Interval& b) { return *this = *this + b; }
@@ -92,26 +94,66 @@ class Interval {
     const double yv = s - x;
     return (x - (s - yv)) + (y - yv);
   }
+  // At least one ulp outward, inline (libm's nextafter is a call): Rump,
+  // Zimmermann, Boldo, Melquiond, "Computing predecessor and successor in
+  // rounding to nearest", BIT 49 (2009): for finite x,
+  // fl(x + fl(phi |x| + eta)) >= succ(x) with phi = u (1 + 2u), eta = 2^-1074
+  // (one ulp more in rare cases, e.g. next to a power of two: still an outer
+  // bound). The caller handles infinities.
+  static double up(double x) {
+    const double c = 0x1p-53 * (1 + 0x1p-52) * std::abs(x) + 0x1p-1074;
+    return x + c;
+  }
+  static double down(double x) {
+    const double c = 0x1p-53 * (1 + 0x1p-52) * std::abs(x) + 0x1p-1074;
+    return x - c;
+  }
   static double sum_down(double x, double y) {
     const double s = x + y;
-    if (!std::isfinite(s)) return std::nextafter(s, -kInf);
-    return sum_error(x, y, s) >= 0 ? s : std::nextafter(s, -kInf);
+    if (!std::isfinite(s)) [[unlikely]] return std::nextafter(s, -kInf);
+    const double d = down(s);
+    return sum_error(x, y, s) >= 0 ? s : d;
   }
   static double sum_up(double x, double y) {
     const double s = x + y;
-    if (!std::isfinite(s)) return std::nextafter(s, kInf);
-    return sum_error(x, y, s) <= 0 ? s : std::nextafter(s, kInf);
+    if (!std::isfinite(s)) [[unlikely]] return std::nextafter(s, kInf);
+    const double u = up(s);
+    return sum_error(x, y, s) <= 0 ? s : u;
   }
-  // Product of two nonzero doubles; fma gives the exact rounding error while
-  // the product is far from underflow (glibc dispatches fma to the hardware
-  // instruction where there is one).
+  // Product of two nonzero doubles; product_error gives the exact rounding
+  // error while the product is far from underflow.
   static Interval point_product(double x, double y) {
     const double p = x * y;
-    if (!std::isfinite(p) || std::abs(p) < 0x1p-960)
+    if (!std::isfinite(p) || std::abs(p) < 0x1p-960) [[unlikely]]
       return {std::nextafter(p, -kInf), std::nextafter(p, kInf)};
-    const double e = std::fma(x, y, -p);
-    return {e >= 0 ? p : std::nextafter(p, -kInf), e <= 0 ? p : std::nextafter(p, kInf)};
+    const double e = product_error(x, y, p);
+    const double lo = down(p), hi = up(p);
+    return {e >= 0 ? p : lo, e <= 0 ? p : hi};
   }
+  // The exact error x*y - p of the rounded product p, without calling
+  // std::fma (a libm call unless the target has FMA, e.g. -march=haswell).
+#if defined(__FMA__) || defined(__FP_FAST_FMA)
+  static double product_error(double x, double y, double p) { return __builtin_fma(x, y, -p); }
+#else
+  // Dekker's TwoProduct with Veltkamp's splitting; exact while no split
+  // overflows (|x|, |y| < 2^995) and the product does not underflow (the
+  // caller checked |p| >= 2^-960). Outside, fall back to fma.
+  static void split(double a, double& hi, double& lo) {
+    const double c = 134217729.0 * a;  // 2^27 + 1
+    hi = c - (c - a);
+    lo = a - hi;
+  }
+  static double product_error(double x, double y, double p) {
+    if (std::abs(x) >= 0x1p995 || std::abs(y) >= 0x1p995) [[unlikely]] return std::fma(x, y, -p);
+    double xh, xl, yh, yl;
+    split(x, xh, xl);
+    split(y, yh, yl);
+    const double e1 = p - xh * yh;  // Shewchuk's Two_Product_Tail: each step exact
+    const double e2 = e1 - xl * yh;
+    const double e3 = e2 - xh * yl;
+    return xl * yl - e3;
+  }
+#endif
 
   double lo_ = 0, hi_ = 0;
 };

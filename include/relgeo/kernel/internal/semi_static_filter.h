@@ -69,29 +69,48 @@ struct Orientation_filter_constants {
   static constexpr T high_3 = power_of_two<T>((max_e - 4) / 3);
 };
 
-/// Epsilon-tested sign of orientation_2 in T; `uncertain` when the test cannot
-/// certify the sign of the computed determinant.
+/// Outcome of the epsilon test, computed without branches.
+///  * decided: the range guards hold and |det| > bound: `sign` is the exact sign;
+///  * otherwise exact_zero: all differences of one coordinate are 0 and det is
+///    0, so the exact determinant is 0;
+///  * otherwise the test cannot tell (`uncertain`).
+struct Epsilon_test {
+  Certified_sign sign;  ///< sign of the computed determinant
+  bool decided;
+  bool exact_zero;
+  /// The certified answer. The branch on `decided` is the only one, and is
+  /// well predicted on the usual inputs (nearly all decided).
+  Certified_sign answer() const {
+    if (decided) [[likely]]
+      return sign;
+    return exact_zero ? Certified_sign::zero : Certified_sign::uncertain;
+  }
+};
+
 template <class T>
-inline Certified_sign filtered_orientation_2(T px, T py, T qx, T qy, T rx, T ry) {
+inline Epsilon_test epsilon_test(T det, T bound, bool in_range, T lo) {
+  // x <= 0 stands for x == 0 on the non-negative |det| and lo (the same answer,
+  // NaN included, with one flag test); & rather than && keeps it branch-free.
+  const T abs_det = std::abs(det);
+  return {sign_of(det), static_cast<bool>(in_range & (abs_det > bound)),
+          static_cast<bool>((abs_det <= 0) & (lo <= 0))};
+}
+
+/// The epsilon test of orientation_2 in T.
+template <class T>
+inline Epsilon_test orientation_2_epsilon_test(T px, T py, T qx, T qy, T rx, T ry) {
   using C = Orientation_filter_constants<T>;
   const T det = orientation_2_determinant<T>(px, py, qx, qy, rx, ry);
   const T mx = std::max(std::abs(qx - px), std::abs(rx - px));
   const T my = std::max(std::abs(qy - py), std::abs(ry - py));
   const T lo = std::min(mx, my), hi = std::max(mx, my);
-  if (lo >= C::low_2 && hi <= C::high_2) {
-    const T bound = C::eps_2 * mx * my;
-    if (det > bound) return Certified_sign::positive;
-    if (det < -bound) return Certified_sign::negative;
-    return Certified_sign::uncertain;
-  }
-  if (det == 0 && lo == 0) return Certified_sign::zero;
-  return Certified_sign::uncertain;
+  return epsilon_test(det, C::eps_2 * mx * my, (lo >= C::low_2) & (hi <= C::high_2), lo);
 }
 
-/// Epsilon-tested sign of orientation_3 in T.
+/// The epsilon test of orientation_3 in T.
 template <class T>
-inline Certified_sign filtered_orientation_3(T px, T py, T pz, T qx, T qy, T qz, T rx, T ry,
-                                             T rz, T sx, T sy, T sz) {
+inline Epsilon_test orientation_3_epsilon_test(T px, T py, T pz, T qx, T qy, T qz, T rx, T ry,
+                                               T rz, T sx, T sy, T sz) {
   using C = Orientation_filter_constants<T>;
   const T det =
       orientation_3_determinant<T>(px, py, pz, qx, qy, qz, rx, ry, rz, sx, sy, sz);
@@ -99,14 +118,21 @@ inline Certified_sign filtered_orientation_3(T px, T py, T pz, T qx, T qy, T qz,
   const T my = std::max({std::abs(qy - py), std::abs(ry - py), std::abs(sy - py)});
   const T mz = std::max({std::abs(qz - pz), std::abs(rz - pz), std::abs(sz - pz)});
   const T lo = std::min({mx, my, mz}), hi = std::max({mx, my, mz});
-  if (lo >= C::low_3 && hi <= C::high_3) {
-    const T bound = C::eps_3 * mx * my * mz;
-    if (det > bound) return Certified_sign::positive;
-    if (det < -bound) return Certified_sign::negative;
-    return Certified_sign::uncertain;
-  }
-  if (det == 0 && lo == 0) return Certified_sign::zero;
-  return Certified_sign::uncertain;
+  return epsilon_test(det, C::eps_3 * mx * my * mz, (lo >= C::low_3) & (hi <= C::high_3), lo);
+}
+
+/// Epsilon-tested sign of orientation_2 in T; `uncertain` when the test cannot
+/// certify the sign of the computed determinant.
+template <class T>
+inline Certified_sign filtered_orientation_2(T px, T py, T qx, T qy, T rx, T ry) {
+  return orientation_2_epsilon_test<T>(px, py, qx, qy, rx, ry).answer();
+}
+
+/// Epsilon-tested sign of orientation_3 in T.
+template <class T>
+inline Certified_sign filtered_orientation_3(T px, T py, T pz, T qx, T qy, T qz, T rx, T ry,
+                                             T rz, T sx, T sy, T sz) {
+  return orientation_3_epsilon_test<T>(px, py, pz, qx, qy, qz, rx, ry, rz, sx, sy, sz).answer();
 }
 
 }  // namespace relgeo::internal

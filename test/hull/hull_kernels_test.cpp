@@ -1,0 +1,143 @@
+// Planar hulls typed across kernels: the classroom example A1, the output
+// convention, degenerate and bad input (SPEC Sec. 3.1, issue "planar convex hulls").
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "hull_inputs.h"
+#include "relgeo/error.h"
+#include "relgeo/hull.h"
+#include "relgeo/kernel.h"
+#include "relgeo/kernel/cgal_kernel.h"
+
+namespace relgeo::test {
+namespace {
+
+enum class Algorithm { incremental, fortune, monotone };
+
+template <class K>
+Hull_result<typename K::Point_2> run(Algorithm a, const std::vector<typename K::Point_2>& pts) {
+  switch (a) {
+    case Algorithm::incremental: return graham_incremental<K>(pts);
+    case Algorithm::fortune: return graham_fortune<K>(pts);
+    default: return monotone_chain<K>(pts);
+  }
+}
+constexpr Algorithm kAlgorithms[] = {Algorithm::incremental, Algorithm::fortune, Algorithm::monotone};
+
+template <class K>
+class HullKernels : public ::testing::Test {};
+using Hull_kernels =
+    ::testing::Types<Naive_kernel<double>, Naive_kernel<float>, Failsafe_kernel<double>,
+                     Interval_kernel, Filtered_exact_kernel, Exact_kernel, Mpfr_kernel<53>,
+                     Cgal_kernel<CGAL::Epick>>;
+TYPED_TEST_SUITE(HullKernels, Hull_kernels);
+
+TYPED_TEST(HullKernels, ClassroomExampleA1) {
+  using K = TypeParam;
+  const auto input = classroom_a1();
+  const auto pts = to_kernel<K>(input);
+  for (Algorithm a : kAlgorithms) {
+    const auto r = run<K>(a, pts);
+    const auto e = hull_error(input, r.indices);
+    const auto b = hull_backward_error(input, r.indices);
+    if constexpr (K::has_exact_predicates) {
+      EXPECT_EQ(r.indices, classroom_a1_hull()) << K::name();
+      EXPECT_EQ(e.value, 0.0);
+      EXPECT_EQ(b.value, 0.0);
+    }
+    if constexpr (K::is_certified) {
+      // Stable algorithms under certified kernels: convex, within their bound.
+      if (a != Algorithm::incremental) {
+        EXPECT_TRUE(e.convex) << K::name();
+        const auto bound = graham_fortune_backward_error_bound<K>(input);
+        if (bound) {
+          EXPECT_LE(b.value, *bound) << K::name();
+        }
+        EXPECT_EQ(r.indices, classroom_a1_hull()) << K::name();
+      }
+    }
+    ASSERT_TRUE(r.ok()) << K::name() << " " << r.failure;
+  }
+}
+
+TEST(HullClassroomExample, NaiveIncrementalLosesTheExtremePointP4) {
+  // The published failure (Kettner et al., Sec. 4.1; thesis Fig. 1.1).
+  const auto input = classroom_a1();
+  const auto r = graham_incremental<Naive_kernel<double>>(input);
+  EXPECT_TRUE(r.ok());
+  EXPECT_EQ(std::count(r.indices.begin(), r.indices.end(), 3u), 0) << "p4 should be lost";
+  const auto b = hull_backward_error(input, r.indices);
+  EXPECT_GT(b.value, 0.0);
+  ASSERT_TRUE(b.worst_point.has_value());
+  EXPECT_EQ(*b.worst_point, 3u);
+  EXPECT_GT(hull_error(input, r.indices).value, 0.29);  // p4 is ~7.8 from the computed hull, M = 26
+  // The stable scan in plain double keeps it.
+  EXPECT_EQ(graham_fortune<Naive_kernel<double>>(input).indices, classroom_a1_hull());
+  EXPECT_EQ(graham_fortune<Failsafe_kernel<double>>(input).indices, classroom_a1_hull());
+}
+
+TYPED_TEST(HullKernels, OutputConventionOnRandomInput) {
+  using K = TypeParam;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const auto input = uniform_points(seed, 200);
+    const auto exact = exact_hull(input);
+    for (Algorithm a : kAlgorithms) {
+      const auto r = run<K>(a, to_kernel<K>(input));
+      ASSERT_TRUE(r.ok());
+      ASSERT_EQ(r.points.size(), r.indices.size());
+      // Random input is far from degenerate: every kernel finds the exact hull.
+      const auto got = points_at(input, r.indices);
+      if constexpr (!std::is_same_v<typename K::FT, float>) {
+        EXPECT_EQ(got, exact) << K::name() << " seed " << seed;
+      }
+    }
+  }
+}
+
+TYPED_TEST(HullKernels, DegenerateInputHasDocumentedResults) {
+  using K = TypeParam;
+  const K k;
+  for (Algorithm a : kAlgorithms) {
+    EXPECT_TRUE(run<K>(a, {}).indices.empty());
+    EXPECT_EQ(run<K>(a, to_kernel<K>({{2, 3}})).indices, (std::vector<std::size_t>{0}));
+    // All equal: the smallest index.
+    EXPECT_EQ(run<K>(a, to_kernel<K>({{1, 1}, {1, 1}, {1, 1}})).indices, (std::vector<std::size_t>{0}));
+    // Collinear: the two extreme points, lexicographically smallest first.
+    EXPECT_EQ(run<K>(a, to_kernel<K>({{1, 1}, {3, 3}, {0, 0}, {2, 2}, {3, 3}})).indices,
+              (std::vector<std::size_t>{2, 1}));
+    // Duplicated hull vertices and a point on an edge: smallest indices, no edge point.
+    EXPECT_EQ(run<K>(a, to_kernel<K>({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {4, 0}, {2, 0}, {0, 0}, {1, 1}})).indices,
+              (std::vector<std::size_t>{0, 1, 2, 3}));
+  }
+  (void)k;
+}
+
+TYPED_TEST(HullKernels, NonFiniteInputIsRejectedWithATypedError) {
+  using K = TypeParam;
+  if constexpr (!K::has_exact_constructions && !std::is_same_v<K, Mpfr_kernel<53>>) {
+    for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+      const auto pts = to_kernel<K>({{0, 0}, {1, bad}, {2, 0}});
+      for (Algorithm a : kAlgorithms) EXPECT_THROW(run<K>(a, pts), Non_finite_input) << K::name();
+    }
+  }
+}
+
+TEST(HullIncremental, NeverHangsOrCrashesOnAdversarialInput) {
+  // Naive double on thousands of near-degenerate sets: every run returns, and
+  // its indices are valid input indices; failures are reported, not hidden.
+  std::size_t failed = 0, lost = 0;
+  for (std::uint64_t seed = 0; seed < 4000; ++seed) {
+    const auto input = near_degenerate_points(seed, static_cast<int>(seed % 4));
+    const auto r = graham_incremental<Naive_kernel<double>>(input);
+    for (std::size_t i : r.indices) ASSERT_LT(i, input.size());
+    failed += !r.ok();
+    lost += hull_backward_error(input, r.indices).value > 0;
+  }
+  std::printf("[ incremental/double ] 4000 near-degenerate sets: %zu non-terminations, %zu with lost points\n", failed, lost);
+  EXPECT_GT(lost + failed, 0u) << "the naive incremental algorithm is expected to fail somewhere";
+}
+
+}  // namespace
+}  // namespace relgeo::test

@@ -3,7 +3,7 @@
 #
 #   bash scripts/relgeo.sh experiment   # deps + Release build + `relgeo experiment` (the main job)
 #   bash scripts/relgeo.sh test         # deps + Release build + all tests + sanitizer subset
-#   bash scripts/relgeo.sh sanitize     # deps + ASan/UBSan build of the kernel tests only
+#   bash scripts/relgeo.sh sanitize     # deps + ASan/UBSan build of the library's unit tests
 #
 # Debian 12. Missing apt packages are installed when run as root (or through
 # sudo when it exists). Environment: RELGEO_BUILD_DIR (default build),
@@ -63,11 +63,11 @@ run_sanitized_tests() {
   local dir=$build-asan
   configure "$dir" -DRELGEO_SANITIZE=ON -DRELGEO_BUILD_BENCHMARKS=OFF -DRELGEO_BUILD_TOOLS=OFF \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo
-  cmake --build "$dir" --target relgeo_kernel_tests relgeo_kernel_cgal_tests relgeo_kernel_soundness_tests -j "$jobs"
+  cmake --build "$dir" -j "$jobs"
   # A twentieth of the soundness inputs: the sanitizers check memory and UB, the
   # full-size run above checks the figures.
   (cd "$dir" && RELGEO_TEST_SCALE=0.05 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-     ctest --output-on-failure -j "$jobs" -L kernel)
+     ctest --output-on-failure -j "$jobs" -L unit)
 }
 
 run_tests() {

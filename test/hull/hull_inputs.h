@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "relgeo/analysis/predicate_workloads.h"
 #include "relgeo/kernel/point.h"
 
 namespace relgeo::test {
@@ -24,11 +25,7 @@ inline std::vector<P2> classroom_a1() {
 /// Its exact hull: CCW from the lexicographically smallest vertex.
 inline std::vector<std::size_t> classroom_a1_hull() { return {3, 4, 8, 7, 6, 5}; }
 
-inline double moved_ulps(double v, int k) {
-  const double dir = k > 0 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
-  for (int i = 0; i < std::abs(k); ++i) v = std::nextafter(v, dir);
-  return v;
-}
+using analysis::moved_by_ulps;
 
 /// Small near-degenerate point sets, one of four kinds chosen by `kind`:
 /// 0 points on a line (rounded) moved by a few ulps, 1 points near a circle
@@ -45,7 +42,7 @@ inline std::vector<P2> near_degenerate_points(std::uint64_t seed, int kind) {
       const P2 a{uniform(-10, 10), uniform(-10, 10)}, b{uniform(-10, 10), uniform(-10, 10)};
       for (int i = 0; i < n; ++i) {
         const double t = uniform(-0.2, 1.2);
-        pts.push_back({moved_ulps(a.x + t * (b.x - a.x), ulps(3)), moved_ulps(a.y + t * (b.y - a.y), ulps(3))});
+        pts.push_back({moved_by_ulps(a.x + t * (b.x - a.x), ulps(3)), moved_by_ulps(a.y + t * (b.y - a.y), ulps(3))});
       }
       break;
     }
@@ -62,7 +59,7 @@ inline std::vector<P2> near_degenerate_points(std::uint64_t seed, int kind) {
       for (int i = 0; i < 3; ++i) centres.push_back({uniform(-1, 1), uniform(-1, 1)});
       for (int i = 0; i < n; ++i) {
         const P2 c = centres[g() % 3];
-        pts.push_back({moved_ulps(c.x, ulps(2)), moved_ulps(c.y, ulps(2))});
+        pts.push_back({moved_by_ulps(c.x, ulps(2)), moved_by_ulps(c.y, ulps(2))});
       }
       break;
     }
@@ -71,7 +68,7 @@ inline std::vector<P2> near_degenerate_points(std::uint64_t seed, int kind) {
       for (int i = 4; i < n; ++i) {
         const P2 a = pts[0], b = pts[1 + g() % 3];
         const double t = uniform(0, 1);
-        pts.push_back({moved_ulps(a.x + t * (b.x - a.x), ulps(2)), moved_ulps(a.y + t * (b.y - a.y), ulps(2))});
+        pts.push_back({moved_by_ulps(a.x + t * (b.x - a.x), ulps(2)), moved_by_ulps(a.y + t * (b.y - a.y), ulps(2))});
       }
     }
   }

@@ -5,20 +5,20 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
-#include <cstdlib>
+#include <algorithm>
 
 #include "hull_inputs.h"
 #include "relgeo/error.h"
 #include "relgeo/hull.h"
 #include "relgeo/kernel.h"
+#include "support/soundness_data.h"
 
 namespace relgeo::test {
 namespace {
 
+// RELGEO_TEST_SCALE (sanitizer builds) shrinks the case counts.
 std::uint64_t case_count(std::uint64_t full) {
-  const char* s = std::getenv("RELGEO_TEST_SCALE");
-  const double scale = s ? std::atof(s) : 1.0;
-  return scale > 0 && scale < 1 ? static_cast<std::uint64_t>(full * scale) + 1 : full;
+  return static_cast<std::uint64_t>(static_cast<double>(full) * std::min(1.0, test_scale())) + 1;
 }
 
 TEST(HullProperties, FortuneUnderFailsafeIsConvexAndWithinItsBound) {

@@ -33,19 +33,20 @@ struct Workload {
   std::vector<Case> cases;
 };
 
+/// v moved by k ulps (k may be negative): the perturbation of the near-degenerate families.
+inline double moved_by_ulps(double v, int k) {
+  const double dir = k > 0 ? std::numeric_limits<double>::infinity()
+                           : -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < std::abs(k); ++i) v = std::nextafter(v, dir);
+  return v;
+}
+
 namespace internal_workloads {
 
 /// Uniform double in [lo, hi) from 53 random bits (portable across libraries).
 inline double uniform(std::mt19937_64& g, double lo, double hi) {
   const double u = static_cast<double>(g() >> 11) * 0x1p-53;
   return lo + (hi - lo) * u;
-}
-/// v moved by k ulps (k may be negative).
-inline double ulps(double v, int k) {
-  const double dir = k > 0 ? std::numeric_limits<double>::infinity()
-                           : -std::numeric_limits<double>::infinity();
-  for (int i = 0; i < std::abs(k); ++i) v = std::nextafter(v, dir);
-  return v;
 }
 inline int small_int(std::mt19937_64& g, int lo, int hi) {
   return lo + static_cast<int>(g() % static_cast<std::uint64_t>(hi - lo + 1));
@@ -99,8 +100,8 @@ inline Workload<Orientation_2_case> near_collinear_2(std::size_t n, std::uint64_
     const double px = uniform(g, -scale, scale), py = uniform(g, -scale, scale);
     const double rx = uniform(g, -scale, scale), ry = uniform(g, -scale, scale);
     const double t = uniform(g, -0.5, 1.5);
-    const double qx = ulps(px + t * (rx - px), small_int(g, -4, 4));
-    const double qy = ulps(py + t * (ry - py), small_int(g, -4, 4));
+    const double qx = moved_by_ulps(px + t * (rx - px), small_int(g, -4, 4));
+    const double qy = moved_by_ulps(py + t * (ry - py), small_int(g, -4, 4));
     w.cases.push_back({px, py, qx, qy, rx, ry});
   }
   return w;
@@ -174,7 +175,7 @@ inline Workload<Orientation_3_case> near_coplanar_3(std::size_t n, std::uint64_t
     const double a = uniform(g, -0.5, 1.5), b = uniform(g, -0.5, 1.5);
     for (int d = 0; d < 3; ++d) {
       const double v = c.c[d] + a * (c.c[3 + d] - c.c[d]) + b * (c.c[6 + d] - c.c[d]);
-      c.c[9 + d] = ulps(v, small_int(g, -4, 4));
+      c.c[9 + d] = moved_by_ulps(v, small_int(g, -4, 4));
     }
     w.cases.push_back(c);
   }

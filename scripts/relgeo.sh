@@ -22,6 +22,7 @@ packages=(
   libcgal-dev libboost-dev libeigen3-dev libtbb-dev
   libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libstb-dev
+  libopenmesh-dev
 )
 
 log() { printf '[relgeo] %s\n' "$*" >&2; }
@@ -46,9 +47,27 @@ install_missing() {
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
+# CGAL's data set of real meshes (tests, benchmarks) is in libcgal-demo, whose
+# GUI dependencies we do not want: unpack the package itself into .cache/.
+cgal_data_archive() {
+  local system=/usr/share/doc/libcgal-dev/data.tar.gz
+  local cache=$root/.cache/cgal-demo
+  local unpacked=$cache/usr/share/doc/libcgal-dev/data.tar.gz
+  if [[ -f $system ]]; then echo "$system"; return; fi
+  if [[ ! -f $unpacked ]]; then
+    mkdir -p "$cache"
+    (cd "$cache" && { apt-get download libcgal-demo >/dev/null 2>&1 ||
+                      { apt-get update -qq >/dev/null 2>&1 || true; apt-get download libcgal-demo >/dev/null; }; } &&
+     dpkg -x libcgal-demo_*.deb . && rm -f libcgal-demo_*.deb) >&2 ||
+      log "warning: could not fetch CGAL's data set (libcgal-demo); its tests will be skipped"
+  fi
+  echo "$unpacked"
+}
+
 configure() {  # $1 build dir, rest: extra cmake args
   local dir=$1; shift
-  cmake -S "$root" -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+  cmake -S "$root" -B "$dir" -DCMAKE_BUILD_TYPE=Release \
+    -DRELGEO_CGAL_DATA_ARCHIVE="$(cgal_data_archive)" "$@" >/dev/null
 }
 
 run_experiment() {

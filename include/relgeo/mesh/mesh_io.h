@@ -1,0 +1,160 @@
+// relgeo/mesh/mesh_io.h — reading and writing triangle meshes (OFF, OBJ, PLY,
+// STL through CGAL's polygon-soup IO) and feature tags (a side file).
+//
+// Needs CGAL (link relgeo::cgal).
+//
+// Tag file format (".tags" by convention, next to the mesh file): text, one
+// entry per line, '#' starts a comment, indices 0-based into the mesh's
+// vertices as read:
+//     # relgeo feature tags
+//     crease 0 1
+//     corner 5
+// Mesh formats have no standard field for crease edges, hence the side file;
+// it works with every format and survives tools that rewrite the mesh file
+// without reordering its vertices.
+#pragma once
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <cmath>
+#include <cstddef>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "relgeo/core/errors.h"
+#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/mesh/polygon_soup.h"
+#include "relgeo/mesh/triangle_mesh.h"
+
+namespace relgeo {
+
+/// Options of read_mesh.
+struct Read_options {
+  /// Split polygons with more than three corners into fans (else an error).
+  bool triangulate_polygons = false;
+  /// Also read tags from this file (empty: none).
+  std::string tags_path{};
+};
+
+/// Options of write_mesh.
+struct Write_options {
+  /// Significant digits of ASCII coordinates (17: doubles round-trip exactly).
+  int precision = 17;
+  /// Binary PLY/STL (ignored for OFF and OBJ).
+  bool binary = false;
+  /// Also write the tags to this file (empty: none).
+  std::string tags_path{};
+};
+
+/// Reads feature tags. \throws Unreadable_file (missing file, unknown keyword,
+/// bad index: the message names the line).
+inline Feature_tags read_feature_tags(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Unreadable_file("cannot open tag file '" + path + "'");
+  Feature_tags tags;
+  std::vector<Edge> creases;
+  std::vector<Index> corners;
+  std::string line;
+  for (int no = 1; std::getline(in, line); ++no) {
+    if (const auto c = line.find('#'); c != std::string::npos) line.erase(c);
+    std::istringstream s(line);
+    std::string key;
+    if (!(s >> key)) continue;
+    const auto bad = [&] {
+      return Unreadable_file("tag file '" + path + "', line " + std::to_string(no) + ": cannot parse '" + line + "'");
+    };
+    long long a = -1, b = -1;
+    std::string rest;
+    if (key == "crease") {
+      if (!(s >> a >> b) || (s >> rest) || a < 0 || b < 0 || a == b || a >= invalid_index || b >= invalid_index)
+        throw bad();
+      creases.push_back(Edge::of(static_cast<Index>(a), static_cast<Index>(b)));
+    } else if (key == "corner") {
+      if (!(s >> a) || (s >> rest) || a < 0 || a >= invalid_index) throw bad();
+      corners.push_back(static_cast<Index>(a));
+    } else {
+      throw bad();
+    }
+  }
+  tags.set_creases(std::move(creases));
+  tags.set_corners(std::move(corners));
+  return tags;
+}
+
+/// Writes feature tags (format in the file comment). \throws Unreadable_file
+/// when the file cannot be written.
+inline void write_feature_tags(const std::string& path, const Feature_tags& tags) {
+  std::ofstream out(path);
+  if (!out) throw Unreadable_file("cannot write tag file '" + path + "'");
+  out << "# relgeo feature tags: 'crease a b', 'corner v' (0-based vertex indices)\n";
+  for (const Edge& e : tags.creases()) out << "crease " << e.a << ' ' << e.b << '\n';
+  for (Index v : tags.corners()) out << "corner " << v << '\n';
+  if (!out) throw Unreadable_file("cannot write tag file '" + path + "'");
+}
+
+/// \brief Reads a triangle mesh from an OFF, OBJ, PLY or STL file (by
+/// extension, through CGAL::IO::read_polygon_soup), with double coordinates.
+///
+/// \throws Unreadable_file when the file is missing, of an unknown format or
+/// cannot be parsed; Non_finite_input for NaN or infinite coordinates;
+/// Invalid_input / Invalid_mesh for polygons that are not triangles (unless
+/// triangulated) or bad indices. The mesh itself is not checked (check_mesh).
+inline Triangle_mesh<Point_3<double>> read_mesh(const std::string& path, const Read_options& options = {}) {
+  using CP = CGAL::Simple_cartesian<double>::Point_3;
+  std::vector<CP> pts;
+  std::vector<std::vector<std::size_t>> polys;
+  {
+    std::ifstream probe(path);
+    if (!probe) throw Unreadable_file("cannot open mesh file '" + path + "'");
+  }
+  bool ok = false;
+  try {
+    ok = CGAL::IO::read_polygon_soup(path, pts, polys);
+  } catch (const std::exception& e) {
+    throw Unreadable_file("cannot parse mesh file '" + path + "': " + e.what());
+  }
+  if (!ok) throw Unreadable_file("cannot parse mesh file '" + path + "' (OFF, OBJ, PLY or STL expected)");
+  std::vector<Point_3<double>> points;
+  points.reserve(pts.size());
+  for (const CP& p : pts) {
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw Non_finite_input("mesh file '" + path + "': vertex " + std::to_string(points.size()) +
+                             " has a NaN or infinite coordinate");
+    points.push_back({p.x(), p.y(), p.z()});
+  }
+  Triangle_mesh<Point_3<double>> m =
+      from_polygon_soup(std::move(points), polys, Soup_options{.triangulate_polygons = options.triangulate_polygons});
+  if (!options.tags_path.empty()) m.tags = read_feature_tags(options.tags_path);
+  return m;
+}
+
+/// \brief Writes a triangle mesh (format by extension: .off, .obj, .ply, .stl)
+/// through CGAL::IO::write_polygon_soup. Coordinates are converted to double
+/// (exact types are rounded; intervals give their midpoints).
+/// \throws Unreadable_file when writing fails.
+template <class P>
+void write_mesh(const std::string& path, const Triangle_mesh<P>& m, const Write_options& options = {}) {
+  using CP = CGAL::Simple_cartesian<double>::Point_3;
+  using A = internal::Point_access<P>;
+  std::vector<CP> pts;
+  pts.reserve(m.vertices.size());
+  for (const P& p : m.vertices)
+    pts.emplace_back(internal::coordinate_to_double(A::x(p)), internal::coordinate_to_double(A::y(p)),
+                     internal::coordinate_to_double(A::z(p)));
+  const auto polys = to_polygon_soup(m);
+  bool ok = false;
+  try {
+    ok = CGAL::IO::write_polygon_soup(
+        path, pts, polys,
+        CGAL::parameters::stream_precision(options.precision).use_binary_mode(options.binary));
+  } catch (const std::exception& e) {
+    throw Unreadable_file("cannot write mesh file '" + path + "': " + e.what());
+  }
+  if (!ok) throw Unreadable_file("cannot write mesh file '" + path + "' (.off, .obj, .ply or .stl expected)");
+  if (!options.tags_path.empty()) write_feature_tags(options.tags_path, m.tags);
+}
+
+}  // namespace relgeo

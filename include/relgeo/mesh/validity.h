@@ -1,0 +1,186 @@
+// relgeo/mesh/validity.h — validity checks with a typed report (thesis Sec.
+// 5.4.2; SPEC Sec. 5 step 5): closed, 2-manifold, consistently oriented, no
+// degenerate faces, finite coordinates, valid tags. Self-intersection, which
+// needs CGAL, is added by self_intersection.h (check_solid).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "relgeo/kernel/certified_sign.h"
+#include "relgeo/kernel/exact_kernel.h"
+#include "relgeo/kernel/filtered_exact_kernel.h"
+#include "relgeo/kernel/interval_kernel.h"
+#include "relgeo/kernel/mpfr_kernel.h"
+#include "relgeo/kernel/naive_kernel.h"
+#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/mesh/mesh_errors.h"
+#include "relgeo/mesh/mesh_topology.h"
+#include "relgeo/mesh/triangle_mesh.h"
+
+namespace relgeo {
+
+/// The kernel whose predicates check_mesh uses by default: exact predicates
+/// for double coordinates (Filtered_exact_kernel) and rationals
+/// (Exact_kernel); Interval_kernel for intervals (doubt is reported as
+/// `undecided`); the naive kernel of float/long double and Mpfr_kernel<B>
+/// (not certified: say so when you rely on it).
+template <class P>
+struct Default_check_kernel;
+template <>
+struct Default_check_kernel<Point_3<double>> {
+  using type = Filtered_exact_kernel;
+};
+template <class T>
+  requires std::is_floating_point_v<T> && (!std::is_same_v<T, double>)
+struct Default_check_kernel<Point_3<T>> {
+  using type = Naive_kernel<T>;
+};
+template <>
+struct Default_check_kernel<Point_3<mpq_class>> {
+  using type = Exact_kernel;
+};
+template <>
+struct Default_check_kernel<Point_3<Interval>> {
+  using type = Interval_kernel;
+};
+template <int B>
+struct Default_check_kernel<Point_3<Mpfr_number<B>>> {
+  using type = Mpfr_kernel<B>;
+};
+
+/// What check_mesh looks at.
+struct Mesh_check_options {
+  /// Report boundary edges (a solid must be closed). Off for open surfaces.
+  bool require_closed = true;
+  /// Report vertices that no face uses.
+  bool report_isolated_vertices = true;
+  /// Test every face for collinear corners with the kernel's predicates.
+  bool check_collinear_faces = true;
+};
+
+/// The result of check_mesh: every issue found, and what was checked.
+struct Mesh_report {
+  std::vector<Mesh_issue> issues;
+  /// Whether self-intersections were checked (check_solid in
+  /// self_intersection.h does; check_mesh does not).
+  bool self_intersections_checked = false;
+
+  bool is_valid() const { return issues.empty(); }
+  std::size_t count(Mesh_defect d) const {
+    return static_cast<std::size_t>(
+        std::count_if(issues.begin(), issues.end(), [d](const Mesh_issue& i) { return i.defect == d; }));
+  }
+  bool has(Mesh_defect d) const { return count(d) > 0; }
+  /// No boundary edge (meaningful when require_closed was set).
+  bool is_closed() const { return !has(Mesh_defect::boundary_edge); }
+  /// Every edge in at most two faces and every vertex a single fan.
+  bool is_manifold() const {
+    return !has(Mesh_defect::non_manifold_edge) && !has(Mesh_defect::non_manifold_vertex);
+  }
+  bool is_consistently_oriented() const { return !has(Mesh_defect::inconsistent_orientation); }
+  bool has_degenerate_faces() const {
+    return has(Mesh_defect::repeated_vertex_in_face) || has(Mesh_defect::collinear_face);
+  }
+  /// Empty when not checked.
+  std::optional<bool> is_self_intersection_free() const {
+    if (!self_intersections_checked) return std::nullopt;
+    return !has(Mesh_defect::self_intersection);
+  }
+  /// One line: "valid" or the count of each defect.
+  std::string summary() const {
+    if (issues.empty()) return "valid";
+    std::string s;
+    for (int d = 0; d <= static_cast<int>(Mesh_defect::undecided); ++d) {
+      const std::size_t c = count(static_cast<Mesh_defect>(d));
+      if (c) s += (s.empty() ? "" : ", ") + std::to_string(c) + " " + std::string(to_string(static_cast<Mesh_defect>(d)));
+    }
+    return s;
+  }
+};
+
+/// \brief Checks a triangle mesh and lists every defect with its location.
+///
+/// Combinatorial checks (exact by nature): indices in range, repeated
+/// vertices in a face, edges with more than two faces, edges traversed twice
+/// in the same direction, vertices whose faces form several fans, boundary
+/// edges (when options.require_closed), isolated vertices, invalid tags.
+/// Geometric checks: non-finite coordinates; collinear faces through K's
+/// coplanar_orientation_3 (an `uncertain` answer gives an `undecided` issue).
+/// Never throws for bad input. Complexity O(V + F).
+template <class K = void, class P>
+Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& options = {}) {
+  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_check_kernel<P>::type, K>;
+  using A = internal::Point_access<P>;
+  Mesh_report r;
+  const std::size_t nv = m.vertices.size();
+  for (Index v = 0; v < nv; ++v)
+    if (!internal::point_is_finite(m.vertices[v]))
+      r.issues.push_back({Mesh_defect::non_finite_coordinate, {v, invalid_index}});
+  const Mesh_topology t = Mesh_topology::build_checked(nv, m.faces, r.issues);
+  for (Index e = 0; e < t.number_of_edges(); ++e)
+    if (options.require_closed && t.is_boundary_edge(e)) {
+      const Edge ab = t.edge_vertices(e);
+      // an edge whose other side failed to pair (non-manifold / misoriented)
+      // is already reported; report true boundary edges only
+      const Index h = t.edge_halfedge(e);
+      if (t.find_halfedge(t.target(h), t.source(h)) == invalid_index &&
+          std::count_if(r.issues.begin(), r.issues.end(), [&](const Mesh_issue& i) {
+            return (i.defect == Mesh_defect::non_manifold_edge ||
+                    i.defect == Mesh_defect::inconsistent_orientation) &&
+                   i.elements[0] == ab.a && i.elements[1] == ab.b;
+          }) == 0)
+        r.issues.push_back({Mesh_defect::boundary_edge, {ab.a, ab.b}});
+    }
+  if (options.report_isolated_vertices) {
+    std::vector<char> used(nv, 0);
+    for (const Triangle& f : m.faces)
+      for (Index v : f)
+        if (v < nv) used[v] = 1;
+    for (Index v = 0; v < nv; ++v)
+      if (!used[v]) r.issues.push_back({Mesh_defect::isolated_vertex, {v, invalid_index}});
+  }
+  for (const Edge& c : m.tags.creases())
+    if (c.a >= nv || c.b >= nv || t.find_edge(c.a, c.b) == invalid_index)
+      r.issues.push_back({Mesh_defect::invalid_tag, {c.a, c.b}});
+  for (Index v : m.tags.corners())
+    if (v >= nv) r.issues.push_back({Mesh_defect::invalid_tag, {v, invalid_index}});
+  if (options.check_collinear_faces) {
+    const Kernel k{};
+    const auto collinear = k.coplanar_orientation_3_object();
+    for (Index f = 0; f < m.faces.size(); ++f) {
+      const Triangle& tr = m.faces[f];
+      if (tr[0] >= nv || tr[1] >= nv || tr[2] >= nv) continue;
+      if (tr[0] == tr[1] || tr[1] == tr[2] || tr[0] == tr[2]) continue;  // reported as repeated
+      const P& a = m.vertices[tr[0]];
+      const P& b = m.vertices[tr[1]];
+      const P& c = m.vertices[tr[2]];
+      if (!internal::point_is_finite(a) || !internal::point_is_finite(b) || !internal::point_is_finite(c))
+        continue;
+      using KP = typename Kernel::Point_3;
+      const auto cv = [](const P& p) {
+        if constexpr (std::is_same_v<KP, P>) return p;
+        else return internal::Point_access<KP>::make(A::x(p), A::y(p), A::z(p));
+      };
+      const Certified_sign s = collinear(cv(a), cv(b), cv(c));
+      if (s == Certified_sign::zero) r.issues.push_back({Mesh_defect::collinear_face, {f, invalid_index}});
+      else if (s == Certified_sign::uncertain) r.issues.push_back({Mesh_defect::undecided, {f, invalid_index}});
+    }
+  }
+  return r;
+}
+
+/// Throws Invalid_mesh with every issue of check_mesh (context names the
+/// caller in the message); returns normally for a valid mesh.
+template <class K = void, class P>
+void require_valid_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& options = {},
+                        const std::string& context = "require_valid_mesh") {
+  Mesh_report r = check_mesh<K>(m, options);
+  if (!r.is_valid()) throw Invalid_mesh(context, std::move(r.issues));
+}
+
+}  // namespace relgeo

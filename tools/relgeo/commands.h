@@ -23,6 +23,17 @@ struct Orient_grid_options {
 };
 int run_orient_grid(const Orient_grid_options& options, std::ostream& out, std::ostream& err);
 
+struct Hull_options {
+  std::string algorithm;  ///< graham-incremental | graham-fortune | monotone-chain | cgal
+  std::string kernel;
+  std::string input;      ///< point file, "-" for standard input
+  std::string svg;        ///< picture file, empty for none
+  Format format = Format::text;
+};
+/// `relgeo hull`: reads the points from `options.input` (or `in` for "-").
+int run_hull_command(const Hull_options& options, std::istream& in, std::ostream& out,
+                     std::ostream& err);
+
 struct Experiment_options {
   std::string output = "results";
   bool quick = false;

@@ -60,11 +60,39 @@ struct Experiment_section {
 /// Kernel comparison: Kettner grids and predicate workloads under every kernel.
 Section_report kernels_section(const Experiment_context& ctx);  // experiment_kernels.cpp
 
+/// Planar convex hulls: every algorithm under every kernel on the classroom
+/// example, Kettner et al.'s construction and near-degenerate families.
+Section_report hull_section(const Experiment_context& ctx);  // experiment_hull.cpp
+
+/// Linear equations (thesis Sec. 3.2): the thesis' example, Hilbert matrices,
+/// precision sweeps, relgeo's elimination against Eigen's LU.
+Section_report linear_section(const Experiment_context& ctx);  // experiment_linear.cpp
+
+/// Extruded objects (thesis Sec. 3.4.1): certified well-formedness of contours
+/// under every kernel and hull algorithm, and the checker's scaling.
+Section_report extrusion_section(const Experiment_context& ctx);  // experiment_extrusion.cpp
+
+/// Loop subdivision (thesis Sec. 5.2, 5.4.1): distances of control and limit
+/// meshes to the exact limit surface per level and kernel, error bounds.
+Section_report subdivision_section(const Experiment_context& ctx);  // experiment_subdivision.cpp
+
 /// Every section, in run order.
 inline constexpr Experiment_section experiment_sections[] = {
     {"kernels", "orientation grids and predicate workloads under every kernel: wrong answers, "
                 "uncertain rate, time per predicate",
      &kernels_section},
+    {"hull", "convex hulls of the classroom example and near-degenerate inputs, every algorithm "
+             "under every kernel: hull, convexity, error E, backward error, a-priori bound, time",
+     &hull_section},
+    {"linear", "linear equations: the thesis' example, Hilbert matrices (backward vs forward error, "
+               "precision needed), Gaussian elimination vs Eigen's LU",
+     &linear_section},
+    {"extrusion", "extruded objects: the three sufficient conditions with certified margins on good "
+                  "and bad contours, every kernel and hull algorithm, scaling to 10^5 curves",
+     &extrusion_section},
+    {"subdivision", "Loop subdivision: distance of control and limit meshes to the exact limit surface "
+                    "per level 0..4 and kernel, error bounds (soundness, tightness), pictures",
+     &subdivision_section},
 };
 
 }  // namespace relgeo::tool

@@ -108,7 +108,7 @@ std::string Text_table::str() const {
   }
   auto cell = [&](const std::string& s, std::size_t i) {
     const std::string pad(width[i] - std::min(width[i], s.size()), ' ');
-    return i == 0 ? s + pad : pad + s;
+    return i < std::max<std::size_t>(left_columns_, 1) ? s + pad : pad + s;
   };
   auto line = [&](const std::vector<std::string>& row) {
     std::string out;

@@ -46,8 +46,9 @@ std::string format_fixed(double v, int decimals);
 /// stay on one line.
 std::string one_line(std::string_view message);
 
-/// A text table with aligned columns: the first column left-aligned, the
-/// others right-aligned. An optional group-header line spans several columns.
+/// A text table with aligned columns: the first column left-aligned (or the
+/// first `left_columns`, see set_left_columns), the others right-aligned. An
+/// optional group-header line spans several columns.
 class Text_table {
  public:
   explicit Text_table(std::vector<std::string> header) : header_(std::move(header)) {}
@@ -55,6 +56,8 @@ class Text_table {
   void set_groups(std::vector<std::pair<std::string, std::size_t>> groups) {
     groups_ = std::move(groups);
   }
+  /// Left-align the first n columns (default 1): names rather than numbers.
+  void set_left_columns(std::size_t n) { left_columns_ = n; }
   void add_row(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
   /// A horizontal rule between rows (drawn before the next row added).
   void add_rule() { rules_.push_back(rows_.size()); }
@@ -65,6 +68,7 @@ class Text_table {
   std::vector<std::pair<std::string, std::size_t>> groups_;
   std::vector<std::vector<std::string>> rows_;
   std::vector<std::size_t> rules_;
+  std::size_t left_columns_ = 1;
 };
 
 }  // namespace relgeo::tool

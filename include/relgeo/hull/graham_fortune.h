@@ -1,6 +1,7 @@
 // relgeo/hull/graham_fortune.h — Fortune's stable Graham scan (thesis Sec. 3.3.3).
 #pragma once
 
+#include <ranges>
 #include <span>
 #include <vector>
 
@@ -40,33 +41,30 @@ Hull_result<typename K::Point_2> graham_fortune(std::span<const typename K::Poin
   using Point = typename K::Point_2;
   internal::require_finite_points<Point>(points, "graham_fortune");
   Hull_result<Point> r;
-  const std::vector<std::size_t> sorted =
-      internal::sorted_distinct_indices(points, k, &r.uncertain_answers);
-  if (sorted.size() <= 2) {
-    r.indices = sorted;
-    internal::attach_points(r, points);
-    return r;
+  const internal::Sorted_input<K> sorted(points, k, &r.uncertain_answers);
+  const std::size_t m = sorted.size();
+  std::vector<std::size_t> chain;  // positions in `sorted`
+  if (m <= 2) {
+    for (std::size_t i = 0; i < m; ++i) chain.push_back(i);
+  } else {
+    const auto orientation = k.orientation_2_object();
+    const std::size_t L = 0, R = m - 1;
+    std::vector<std::size_t> lower, upper{L};  // candidates in sorted order, with the chain ends
+    for (std::size_t p = 1; p < R; ++p) {
+      const Certified_sign s = orientation(sorted.point(L), sorted.point(R), sorted.point(p));
+      ++r.predicate_calls;
+      r.uncertain_answers += (s == Certified_sign::uncertain);
+      if (s == Certified_sign::positive) upper.push_back(p);
+      else if (s == Certified_sign::negative) lower.push_back(p);
+    }
+    lower.push_back(R);
+    chain.push_back(L);
+    internal::scan_chain(sorted, lower, k, chain, 0, r);  // L .. R
+    const std::size_t lower_size = chain.size();
+    internal::scan_chain(sorted, upper | std::views::reverse, k, chain, lower_size - 1, r);  // R .. L
+    chain.pop_back();  // L again
   }
-  const std::size_t L = sorted.front(), R = sorted.back();
-  const auto orientation = k.orientation_2_object();
-  std::vector<std::size_t> lower, upper;  // candidates, in sorted order
-  for (std::size_t i = 1; i + 1 < sorted.size(); ++i) {
-    const std::size_t p = sorted[i];
-    const Certified_sign s = orientation(points[L], points[R], points[p]);
-    ++r.predicate_calls;
-    r.uncertain_answers += (s == Certified_sign::uncertain);
-    if (s == Certified_sign::positive) upper.push_back(p);
-    else if (s == Certified_sign::negative) lower.push_back(p);
-  }
-  lower.push_back(R);
-  std::vector<std::size_t> chain{L};
-  internal::scan_chain<K, Point>(lower, points, k, chain, 0, r);  // L .. R
-  const std::size_t lower_size = chain.size();
-  std::vector<std::size_t> upper_reversed(upper.rbegin(), upper.rend());
-  upper_reversed.push_back(L);
-  internal::scan_chain<K, Point>(upper_reversed, points, k, chain, lower_size - 1, r);  // R .. L
-  chain.pop_back();  // L again
-  r.indices = std::move(chain);
+  for (std::size_t pos : chain) r.indices.push_back(sorted.index(pos));
   internal::attach_points(r, points);
   return r;
 }

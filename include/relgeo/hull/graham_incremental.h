@@ -64,10 +64,9 @@ Hull_result<typename K::Point_2> graham_incremental(std::span<const typename K::
     if (s == Certified_sign::positive || s == Certified_sign::negative) third = i;
   }
   if (third == n) {  // one distinct point, or (as far as K can tell) collinear
-    std::size_t undecided = 0;
-    const auto sorted = internal::sorted_distinct_indices(points, k, &undecided);
-    r.uncertain_answers += undecided;
-    r.indices = sorted.size() <= 1 ? sorted : std::vector<std::size_t>{sorted.front(), sorted.back()};
+    const internal::Sorted_input<K> sorted(points, k, &r.uncertain_answers);
+    if (sorted.size() >= 1) r.indices.push_back(sorted.index(0));
+    if (sorted.size() >= 2) r.indices.push_back(sorted.index(sorted.size() - 1));
     internal::attach_points(r, points);
     return r;
   }

@@ -1,6 +1,7 @@
 // relgeo/hull/monotone_chain.h — Andrew's monotone chain algorithm.
 #pragma once
 
+#include <ranges>
 #include <span>
 #include <vector>
 
@@ -29,19 +30,19 @@ Hull_result<typename K::Point_2> monotone_chain(std::span<const typename K::Poin
   using Point = typename K::Point_2;
   internal::require_finite_points<Point>(points, "monotone_chain");
   Hull_result<Point> r;
-  const std::vector<std::size_t> sorted =
-      internal::sorted_distinct_indices(points, k, &r.uncertain_answers);
-  if (sorted.size() <= 2) {
-    r.indices = sorted;
+  const internal::Sorted_input<K> sorted(points, k, &r.uncertain_answers);
+  const std::size_t m = sorted.size();
+  std::vector<std::size_t> chain;  // positions in `sorted`
+  if (m <= 2) {
+    for (std::size_t i = 0; i < m; ++i) chain.push_back(i);
   } else {
-    std::vector<std::size_t> chain;
-    internal::scan_chain<K, Point>(sorted, points, k, chain, 0, r);  // lower, L..R
+    internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m), k, chain, 0, r);  // lower, L..R
     const std::size_t lower_size = chain.size();
-    std::vector<std::size_t> reversed(sorted.rbegin() + 1, sorted.rend());  // R-1..L
-    internal::scan_chain<K, Point>(reversed, points, k, chain, lower_size - 1, r);
+    internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m - 1) | std::views::reverse, k,
+                         chain, lower_size - 1, r);  // upper, R..L
     chain.pop_back();  // L again
-    r.indices = std::move(chain);
   }
+  for (std::size_t pos : chain) r.indices.push_back(sorted.index(pos));
   internal::attach_points(r, points);
   return r;
 }

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "relgeo/hull/hull_result.h"
@@ -13,17 +14,16 @@
 
 namespace relgeo::internal {
 
-/// Appends the convex chain through `sequence` (in order) to `chain`, whose
-/// last element must be sequence's predecessor (or which is empty).
-template <class K, class Point>
-void scan_chain(std::span<const std::size_t> sequence, std::span<const Point> points, const K& k,
-                std::vector<std::size_t>& chain, std::size_t chain_floor,
-                Hull_result<Point>& stats) {
+/// Extends `chain` (positions in the sorted input) through `positions`, in
+/// order; the stack never pops below chain[chain_floor].
+template <class K, class Sorted, class Positions, class Point>
+void scan_chain(const Sorted& input, Positions&& positions, const K& k,
+                std::vector<std::size_t>& chain, std::size_t chain_floor, Hull_result<Point>& stats) {
   const auto orientation = k.orientation_2_object();
-  for (std::size_t r : sequence) {
+  for (std::size_t r : positions) {
     while (chain.size() >= chain_floor + 2) {
-      const Certified_sign s =
-          orientation(points[chain[chain.size() - 2]], points[chain.back()], points[r]);
+      const Certified_sign s = orientation(input.point(chain[chain.size() - 2]),
+                                           input.point(chain.back()), input.point(r));
       ++stats.predicate_calls;
       stats.uncertain_answers += (s == Certified_sign::uncertain);
       if (s == Certified_sign::positive) break;

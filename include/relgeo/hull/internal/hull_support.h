@@ -8,12 +8,14 @@
 #include <numeric>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "relgeo/core/errors.h"
 #include "relgeo/hull/hull_result.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/internal/kernel_base.h"
+#include "relgeo/kernel/point.h"
 
 namespace relgeo::internal {
 
@@ -45,34 +47,83 @@ void require_finite_points(std::span<const Point> points, const char* who) {
   }
 }
 
-/// Indices of the points sorted lexicographically (ties by index); equal
-/// points reduced to their smallest index. An `uncertain` comparison counts as
-/// `equal` and is reported through *undecided.
+/// The input sorted lexicographically (ties by index), equal points reduced to
+/// their smallest index; position i has point(i) and input index index(i).
+///
+/// For relgeo's floating-point points (finite: callers check first) the
+/// coordinates are compared directly, which is exact, on a compact copy
+/// sorted with std::sort: the sort is most of a hull's running time, and
+/// comparing through the kernel's certified functor on scattered indices was
+/// 2-3x slower (benchmark/hull). Other point types are sorted through the
+/// kernel's compare_xy_2; an `uncertain` comparison counts as `equal` and is
+/// reported through *undecided.
 template <class K>
-std::vector<std::size_t> sorted_distinct_indices(std::span<const typename K::Point_2> points,
-                                                 const K& k, std::size_t* undecided) {
-  const auto compare = k.compare_xy_2_object();
-  std::vector<std::size_t> idx(points.size());
-  std::iota(idx.begin(), idx.end(), std::size_t{0});
-  std::size_t unsure = 0;
-  std::stable_sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
-    const Certified_sign s = compare(points[a], points[b]);
-    unsure += (s == Certified_sign::uncertain);
-    return s == Certified_sign::negative;
-  });
-  std::vector<std::size_t> out;
-  out.reserve(idx.size());
-  for (std::size_t i : idx) {
-    if (!out.empty()) {
-      const Certified_sign s = compare(points[out.back()], points[i]);
-      unsure += (s == Certified_sign::uncertain);
-      if (s == Certified_sign::zero || s == Certified_sign::uncertain) continue;
+class Sorted_input {
+  using Point = typename K::Point_2;
+  static constexpr bool direct = requires(const Point& p) {
+    requires std::is_floating_point_v<std::remove_cvref_t<decltype(p.x)>>;
+    requires std::is_same_v<Point, relgeo::Point_2<std::remove_cvref_t<decltype(p.x)>>>;
+  };
+  struct Record {
+    Point p;
+    std::size_t index;
+  };
+
+ public:
+  Sorted_input(std::span<const Point> points, const K& k, std::size_t* undecided) : points_(points) {
+    if constexpr (direct) {
+      records_.reserve(points.size());
+      for (std::size_t i = 0; i < points.size(); ++i) records_.push_back({points[i], i});
+      std::sort(records_.begin(), records_.end(), [](const Record& a, const Record& b) {
+        if (a.p.x != b.p.x) return a.p.x < b.p.x;
+        if (a.p.y != b.p.y) return a.p.y < b.p.y;
+        return a.index < b.index;
+      });
+      records_.erase(std::unique(records_.begin(), records_.end(),
+                                 [](const Record& a, const Record& b) { return a.p == b.p; }),
+                     records_.end());
+    } else {
+      const auto compare = k.compare_xy_2_object();
+      order_.resize(points.size());
+      std::iota(order_.begin(), order_.end(), std::size_t{0});
+      std::size_t unsure = 0;
+      std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
+        const Certified_sign s = compare(points[a], points[b]);
+        unsure += (s == Certified_sign::uncertain);
+        return s == Certified_sign::negative;
+      });
+      std::size_t kept = 0;
+      for (std::size_t i : order_) {
+        if (kept > 0) {
+          const Certified_sign s = compare(points[order_[kept - 1]], points[i]);
+          unsure += (s == Certified_sign::uncertain);
+          if (s == Certified_sign::zero || s == Certified_sign::uncertain) continue;
+        }
+        order_[kept++] = i;
+      }
+      order_.resize(kept);
+      if (undecided) *undecided += unsure;
     }
-    out.push_back(i);
   }
-  if (undecided) *undecided += unsure;
-  return out;
-}
+
+  std::size_t size() const {
+    if constexpr (direct) return records_.size();
+    else return order_.size();
+  }
+  const Point& point(std::size_t i) const {
+    if constexpr (direct) return records_[i].p;
+    else return points_[order_[i]];
+  }
+  std::size_t index(std::size_t i) const {
+    if constexpr (direct) return records_[i].index;
+    else return order_[i];
+  }
+
+ private:
+  std::span<const Point> points_;
+  std::vector<Record> records_;      // direct comparison
+  std::vector<std::size_t> order_;   // through the kernel
+};
 
 /// Fills result.points from result.indices.
 template <class Point>

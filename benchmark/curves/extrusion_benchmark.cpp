@@ -1,0 +1,147 @@
+// benchmark/curves/extrusion_benchmark.cpp — relgeo::check_extrusion on
+// circle chains of M cubic arcs (M = 10^2 .. 10^5), relative uncertainty 1e-9
+// (the arcs are ~2 pi / M long: 1e-3 would not be covered for large M).
+//
+// Benchmarks are named `extrusion/<kernel>/<algorithm>[/no-prune]/<M>`. One
+// iteration checks the whole contour: 4M hull problems plus condition 3.
+// Subjects: Failsafe_kernel<double> + graham_fortune (the thesis' choice),
+// Filtered_exact_kernel + monotone_chain, Naive_kernel<double> +
+// graham_fortune, Exact_kernel + monotone_chain (M <= 10^4), CGAL's Epick
+// through relgeo's adapter + CGAL::convex_hull_2 (the peer), and failsafe
+// without the spatial prune for M <= 10^3 (condition 3 on all M(M-3)/2
+// pairs: the quadratic cost the prune avoids).
+// Counters: `certified` (1 when the verdict is certified), `pairs` (pairs of
+// condition 3 computed exactly). After the runs a table lists the
+// time per curve and the ratio to failsafe/graham-fortune at the same M.
+// Defaults, unless given: --benchmark_min_time=0.2 --benchmark_repetitions=1.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <benchmark/benchmark.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "relgeo/curves.h"
+#include "relgeo/hull/cgal_convex_hull.h"
+#include "relgeo/kernel.h"
+#include "relgeo/kernel/cgal_kernel.h"
+
+namespace {
+
+using namespace relgeo;
+
+const Bezier_contour& contour(std::size_t M) {
+  static std::map<std::size_t, Bezier_contour> cache;
+  auto it = cache.find(M);
+  if (it == cache.end()) it = cache.emplace(M, circle_contour(M)).first;
+  return it->second;
+}
+
+struct Cgal_hull {
+  template <class K>
+  Hull_result<typename K::Point_2> operator()(std::span<const typename K::Point_2> p, const K& k) const {
+    return cgal_convex_hull<typename K::Cgal>(p, Cgal_hull_algorithm::convex_hull_2, k);
+  }
+};
+
+std::map<std::string, std::map<std::size_t, double>>& seconds() {  // subject -> M -> s per check
+  static std::map<std::string, std::map<std::size_t, double>> s;
+  return s;
+}
+
+template <class K, class A>
+void bench(benchmark::State& state, bool prune) {
+  const auto M = static_cast<std::size_t>(state.range(0));
+  const Bezier_contour& c = contour(M);
+  Extrusion_options o;
+  o.relative_uncertainty = 1e-9;
+  o.prune = prune;
+  Extrusion_report r;
+  for (auto _ : state) {
+    r = check_extrusion<K>(c, o, K{}, A{});
+    benchmark::DoNotOptimize(r.verdict);
+  }
+  state.counters["certified"] = r.verdict == Extrusion_verdict::certified ? 1 : 0;
+  state.counters["pairs"] = static_cast<double>(r.pairs_computed);
+}
+
+class Collecting_reporter : public benchmark::ConsoleReporter {
+ public:
+  Collecting_reporter() : ConsoleReporter(isatty(STDOUT_FILENO) ? OO_ColorTabular : OO_Tabular) {}
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) {
+      if (r.run_type != Run::RT_Iteration || r.error_occurred || r.iterations <= 0) continue;
+      const std::string name = r.run_name.function_name;  // extrusion/<kernel>/<algorithm>[/no-prune]
+      double t = r.GetAdjustedRealTime();
+      switch (r.time_unit) {
+        case benchmark::kNanosecond: t *= 1e-9; break;
+        case benchmark::kMicrosecond: t *= 1e-6; break;
+        case benchmark::kMillisecond: t *= 1e-3; break;
+        case benchmark::kSecond: break;
+      }
+      seconds()[name.substr(name.find('/') + 1)][std::stoul(r.run_name.args)] = t;
+    }
+  }
+};
+
+void print_table() {
+  if (seconds().empty()) return;
+  const std::string base = "failsafe<double>/graham-fortune";
+  std::printf("\nper curve: real time of one check / M, and the ratio to %s at the same M\n", base.c_str());
+  std::printf("%-40s %8s %12s %12s %10s\n", "subject", "M", "time", "per curve", "ratio");
+  for (const auto& [subject, by_m] : seconds())
+    for (const auto& [M, t] : by_m) {
+      char ratio[16] = "n/a";
+      const auto b = seconds().find(base);
+      if (b != seconds().end() && b->second.count(M)) std::snprintf(ratio, sizeof ratio, "%.2f", t / b->second.at(M));
+      std::printf("%-40s %8zu %10.4g s %9.3g us %10s\n", subject.c_str(), M, t, t / static_cast<double>(M) * 1e6, ratio);
+    }
+}
+
+bool has_flag(int argc, char** argv, const char* flag) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strncmp(argv[i], flag, std::strlen(flag)) == 0) return true;
+  return false;
+}
+
+template <class K, class A>
+void add(const std::string& name, std::vector<long> sizes, bool prune = true) {
+  auto* b = benchmark::RegisterBenchmark(("extrusion/" + name + (prune ? "" : "/no-prune")).c_str(),
+                                         [prune](benchmark::State& s) { bench<K, A>(s, prune); });
+  for (long m : sizes) b->Arg(m);
+  b->Unit(benchmark::kMillisecond);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<char*> args(argv, argv + argc);
+  std::string min_time = "--benchmark_min_time=0.2", reps = "--benchmark_repetitions=1";
+  if (!has_flag(argc, argv, "--benchmark_min_time")) args.insert(args.begin() + 1, min_time.data());
+  if (!has_flag(argc, argv, "--benchmark_repetitions")) args.insert(args.begin() + 1, reps.data());
+  int n = static_cast<int>(args.size());
+  args.push_back(nullptr);
+  benchmark::Initialize(&n, args.data());
+  if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 1;
+  const std::vector<long> all = {100, 1000, 10000, 100000};
+  add<Failsafe_kernel<double>, Graham_fortune_hull>("failsafe<double>/graham-fortune", all);
+  add<Filtered_exact_kernel, Monotone_chain_hull>("filtered/monotone-chain", all);
+  add<Naive_kernel<double>, Graham_fortune_hull>("double/graham-fortune", all);
+  add<Exact_kernel, Monotone_chain_hull>("exact/monotone-chain", {100, 1000, 10000});
+  add<Cgal_kernel<CGAL::Epick>, Cgal_hull>("cgal-epick/cgal", all);
+  add<Failsafe_kernel<double>, Graham_fortune_hull>("failsafe<double>/graham-fortune", {100, 1000}, false);
+  Collecting_reporter reporter;
+  const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
+  print_table();
+  benchmark::Shutdown();
+  if (ran == 0) {
+    std::cerr << "relgeo_extrusion_benchmark: no benchmark matched the filter\n";
+    return 1;
+  }
+  return 0;
+}

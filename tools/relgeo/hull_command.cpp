@@ -1,0 +1,41 @@
+// tools/relgeo/hull_command.cpp — `relgeo hull`: one planar convex hull under
+// an algorithm and a kernel, with its error E, its backward-error certificate
+// and (graham-fortune) the a-priori bound; optional SVG picture.
+#include <ostream>
+
+#include "commands.h"
+#include "hull_report.h"
+#include "hull_runs.h"
+#include "kernel_runs.h"
+#include "point_file.h"
+
+namespace relgeo::tool {
+
+int run_hull_command(const Hull_options& o, std::istream& in, std::ostream& out, std::ostream& err) {
+  validate_hull_combination(o.algorithm, o.kernel);
+  const std::vector<Point_2<double>> points = read_points_2(o.input, in);
+  const Kernel_info info = kernel_info(o.kernel);
+  const Hull_evaluation e = evaluate_hull(o.algorithm, o.kernel, points);
+  if (!o.svg.empty())
+    write_hull_svg(o.svg, points, e, "relgeo hull: " + o.algorithm + ", kernel " + o.kernel);
+  const bool failed = e.run.status != Hull_status::ok;
+
+  if (o.format == Format::json) {
+    Json j = hull_report_json(o.algorithm, info, points, e);
+    j["input"] = o.input;
+    if (!o.svg.empty()) j["svg"] = o.svg;
+    out << dump_json(j) << '\n';
+  } else {
+    std::string text = hull_report_text(o.algorithm, info, o.input == "-" ? "<stdin>" : o.input, points, e);
+    if (!o.svg.empty()) text += "svg              " + o.svg + "\n";
+    out << text;
+  }
+  if (failed) {
+    err << "relgeo: failure: " << o.algorithm << " under kernel '" << o.kernel
+        << "' reported " << e.run.failure << '\n';
+    return exit_failure;
+  }
+  return exit_success;
+}
+
+}  // namespace relgeo::tool

@@ -1,0 +1,42 @@
+// tools/relgeo/subdivision_eval_exact.cpp — run_subdivision under the
+// interval, exact (GMP rational) and MPFR kernels, and the exact reference
+// samples of the limit surface used by the experiment.
+#include "relgeo/kernel/exact_kernel.h"
+#include "relgeo/kernel/interval_kernel.h"
+#include "relgeo/kernel/mpfr_kernel.h"
+#include "subdivision_runs.h"
+
+namespace relgeo::tool {
+
+bool run_subdivision_exact_kernels(const Mesh_double& input, const Subdivision_request& rq, Subdivision_result& r) {
+  const std::string& k = rq.kernel;
+  if (k == "interval") r = run_subdivision_with<Interval_kernel>(input, rq);
+  else if (k == "exact") r = run_subdivision_with<Exact_kernel>(input, rq);
+  else if (k == "mpfr-53") r = run_subdivision_with<Mpfr_kernel<53>>(input, rq);
+  else if (k == "mpfr-113") r = run_subdivision_with<Mpfr_kernel<113>>(input, rq);
+  else return false;
+  return true;
+}
+
+void exact_reference(const Mesh_double& input, unsigned levels, const Loop_options& options, int samples,
+                     std::vector<Point_3<double>>& surface, std::vector<Point_3<double>>& limit_vertices) {
+  using namespace subdivision_detail;
+  using P = Exact_kernel::Point_3;
+  Triangle_mesh<P> m;
+  for (const auto& p : input.vertices) m.vertices.push_back(P{p.x, p.y, p.z});
+  m.faces = input.faces;
+  m.tags = input.tags;
+  Loop_subdivider<Exact_kernel> sub(options);
+  const Triangle_mesh<P> R = sub.refine(m, levels);
+  const Triangle_mesh<P> L = sub.limit_mesh(m, levels);
+  limit_vertices.clear();
+  for (const P& p : L.vertices) limit_vertices.push_back(to_double(p));
+  const Loop_limit_surface<Exact_kernel> S(R, options);
+  const auto grid = dyadic_samples(samples);
+  surface.clear();
+  surface.reserve(R.faces.size() * grid.size());
+  for (Index f = 0; f < R.faces.size(); ++f)
+    for (const auto& [u, v] : grid) surface.push_back(to_double(S.evaluate(f, u, v)));
+}
+
+}  // namespace relgeo::tool

@@ -49,22 +49,30 @@ Hull_result<typename K::Point_2> graham_fortune(std::span<const typename K::Poin
   } else {
     const auto orientation = k.orientation_2_object();
     const std::size_t L = 0, R = m - 1;
-    std::vector<std::size_t> lower, upper{L};  // candidates in sorted order, with the chain ends
-    for (std::size_t p = 1; p < R; ++p) {
-      const Certified_sign s = orientation(sorted.point(L), sorted.point(R), sorted.point(p));
-      ++r.predicate_calls;
-      r.uncertain_answers += (s == Certified_sign::uncertain);
-      if (s == Certified_sign::positive) upper.push_back(p);
-      else if (s == Certified_sign::negative) lower.push_back(p);
-    }
-    lower.push_back(R);
+    // The split by the triangle test against line LR is evaluated on the fly
+    // in each scan (no candidate lists: memory stays at the sorted copy).
+    auto side_is = [&](Certified_sign wanted) {
+      return [&, wanted](std::size_t p) {
+        const Certified_sign s = orientation(sorted.point(L), sorted.point(R), sorted.point(p));
+        ++r.predicate_calls;
+        r.uncertain_answers += (wanted == Certified_sign::negative && s == Certified_sign::uncertain);
+        return s == wanted;
+      };
+    };
+    const std::size_t ends[2] = {R, L};
     chain.push_back(L);
-    internal::scan_chain(sorted, lower, k, chain, 0, r);  // L .. R
+    internal::scan_chain(sorted, std::views::iota(L + 1, R) | std::views::filter(side_is(Certified_sign::negative)),
+                         k, chain, 0, r);
+    internal::scan_chain(sorted, std::span(ends, 1), k, chain, 0, r);  // lower chain L .. R
     const std::size_t lower_size = chain.size();
-    internal::scan_chain(sorted, upper | std::views::reverse, k, chain, lower_size - 1, r);  // R .. L
+    internal::scan_chain(sorted,
+                         std::views::iota(L + 1, R) | std::views::reverse |
+                             std::views::filter(side_is(Certified_sign::positive)),
+                         k, chain, lower_size - 1, r);
+    internal::scan_chain(sorted, std::span(ends + 1, 1), k, chain, lower_size - 1, r);  // upper R .. L
     chain.pop_back();  // L again
   }
-  for (std::size_t pos : chain) r.indices.push_back(sorted.index(pos));
+  r.indices = sorted.indices(chain);
   internal::attach_points(r, points);
   return r;
 }

@@ -65,8 +65,10 @@ Hull_result<typename K::Point_2> graham_incremental(std::span<const typename K::
   }
   if (third == n) {  // one distinct point, or (as far as K can tell) collinear
     const internal::Sorted_input<K> sorted(points, k, &r.uncertain_answers);
-    if (sorted.size() >= 1) r.indices.push_back(sorted.index(0));
-    if (sorted.size() >= 2) r.indices.push_back(sorted.index(sorted.size() - 1));
+    std::vector<std::size_t> ends;
+    if (sorted.size() >= 1) ends.push_back(0);
+    if (sorted.size() >= 2) ends.push_back(sorted.size() - 1);
+    r.indices = sorted.indices(ends);
     internal::attach_points(r, points);
     return r;
   }

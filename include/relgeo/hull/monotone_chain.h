@@ -42,7 +42,7 @@ Hull_result<typename K::Point_2> monotone_chain(std::span<const typename K::Poin
                          chain, lower_size - 1, r);  // upper, R..L
     chain.pop_back();  // L again
   }
-  for (std::size_t pos : chain) r.indices.push_back(sorted.index(pos));
+  r.indices = sorted.indices(chain);
   internal::attach_points(r, points);
   return r;
 }

@@ -47,16 +47,19 @@ void require_finite_points(std::span<const Point> points, const char* who) {
   }
 }
 
-/// The input sorted lexicographically (ties by index), equal points reduced to
-/// their smallest index; position i has point(i) and input index index(i).
+/// The distinct input points in lexicographic order: position i holds
+/// point(i); indices(positions) gives, for positions of this order, the
+/// smallest input index of each point.
 ///
-/// For relgeo's floating-point points (finite: callers check first) the
-/// coordinates are compared directly, which is exact, on a compact copy
-/// sorted with std::sort: the sort is most of a hull's running time, and
-/// comparing through the kernel's certified functor on scattered indices was
-/// 2-3x slower (benchmark/hull). Other point types are sorted through the
-/// kernel's compare_xy_2; an `uncertain` comparison counts as `equal` and is
-/// reported through *undecided.
+/// relgeo's floating-point points (finite: callers check first) are compared
+/// directly, which is exact, on a plain sorted copy of the points; the input
+/// indices are recovered afterwards for the few positions asked for, by one
+/// pass over the input with a binary search among them. The sort is most of a
+/// hull's time and the copy its memory: comparing through the kernel's
+/// certified functor on scattered indices was 2-3x slower, and (point, index)
+/// records took 1.5x the input (benchmark/hull). Other point types are sorted
+/// as indices through the kernel's compare_xy_2; an `uncertain` comparison
+/// counts as `equal` and is reported through *undecided.
 template <class K>
 class Sorted_input {
   using Point = typename K::Point_2;
@@ -64,24 +67,16 @@ class Sorted_input {
     requires std::is_floating_point_v<std::remove_cvref_t<decltype(p.x)>>;
     requires std::is_same_v<Point, relgeo::Point_2<std::remove_cvref_t<decltype(p.x)>>>;
   };
-  struct Record {
-    Point p;
-    std::size_t index;
-  };
+  static bool less_xy(const Point& a, const Point& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  }
 
  public:
-  Sorted_input(std::span<const Point> points, const K& k, std::size_t* undecided) : points_(points) {
+  Sorted_input(std::span<const Point> points, const K& k, std::size_t* undecided) : input_(points) {
     if constexpr (direct) {
-      records_.reserve(points.size());
-      for (std::size_t i = 0; i < points.size(); ++i) records_.push_back({points[i], i});
-      std::sort(records_.begin(), records_.end(), [](const Record& a, const Record& b) {
-        if (a.p.x != b.p.x) return a.p.x < b.p.x;
-        if (a.p.y != b.p.y) return a.p.y < b.p.y;
-        return a.index < b.index;
-      });
-      records_.erase(std::unique(records_.begin(), records_.end(),
-                                 [](const Record& a, const Record& b) { return a.p == b.p; }),
-                     records_.end());
+      sorted_.assign(points.begin(), points.end());
+      std::sort(sorted_.begin(), sorted_.end(), less_xy);
+      sorted_.erase(std::unique(sorted_.begin(), sorted_.end()), sorted_.end());
     } else {
       const auto compare = k.compare_xy_2_object();
       order_.resize(points.size());
@@ -107,21 +102,45 @@ class Sorted_input {
   }
 
   std::size_t size() const {
-    if constexpr (direct) return records_.size();
+    if constexpr (direct) return sorted_.size();
     else return order_.size();
   }
   const Point& point(std::size_t i) const {
-    if constexpr (direct) return records_[i].p;
-    else return points_[order_[i]];
+    if constexpr (direct) return sorted_[i];
+    else return input_[order_[i]];
   }
-  std::size_t index(std::size_t i) const {
-    if constexpr (direct) return records_[i].index;
-    else return order_[i];
+  /// The smallest input index of the point at each position.
+  std::vector<std::size_t> indices(std::span<const std::size_t> positions) const {
+    std::vector<std::size_t> out(positions.size());
+    if constexpr (direct) {
+      // Positions sorted (= points in lexicographic order), then one pass over
+      // the input in index order: the first hit of a point is its smallest index.
+      std::vector<std::size_t> by_position(positions.size());
+      std::iota(by_position.begin(), by_position.end(), std::size_t{0});
+      std::sort(by_position.begin(), by_position.end(),
+                [&](std::size_t a, std::size_t b) { return positions[a] < positions[b]; });
+      constexpr std::size_t unset = static_cast<std::size_t>(-1);
+      std::fill(out.begin(), out.end(), unset);
+      std::size_t found = 0;
+      for (std::size_t i = 0; i < input_.size() && found < out.size(); ++i) {
+        const auto it = std::lower_bound(by_position.begin(), by_position.end(), input_[i],
+                                         [&](std::size_t slot, const Point& q) {
+                                           return less_xy(sorted_[positions[slot]], q);
+                                         });
+        if (it == by_position.end() || !(sorted_[positions[*it]] == input_[i])) continue;
+        // Equal positions (a closed chain repeats none, but be safe) share the index.
+        for (auto j = it; j != by_position.end() && positions[*j] == positions[*it]; ++j)
+          if (out[*j] == unset) out[*j] = i, ++found;
+      }
+    } else {
+      for (std::size_t j = 0; j < positions.size(); ++j) out[j] = order_[positions[j]];
+    }
+    return out;
   }
 
  private:
-  std::span<const Point> points_;
-  std::vector<Record> records_;      // direct comparison
+  std::span<const Point> input_;
+  std::vector<Point> sorted_;        // direct comparison
   std::vector<std::size_t> order_;   // through the kernel
 };
 

@@ -121,11 +121,19 @@ TEST(LimitEvaluation, SubdividedPatchEvaluatesLikeItsParent) {
       const Exact S0(m, o);
       const Mesh_q r = Loop_subdivider<Exact_kernel>(o).refine(m, 1);
       const Exact S1(r, o);
-      for (Index g = 0; g < r.faces.size(); ++g)
+      for (Index g = 0; g < r.faces.size(); ++g) {
         for (const auto& [s, t] : grid) {
           const auto [u, v] = ancestor_parameters(g, 1, s, t);
           ASSERT_EQ(S1.evaluate(g, s, t), S0.evaluate(g / 4, u, v)) << name << " face " << g << " (" << s << ", " << t << ")";
         }
+        // deep next to corner 0 (an old vertex for children 0..2): many
+        // repeated local steps (the reused-stencil path) on both sides
+        if (g % 4 != 3)
+          for (const auto& [s, t] : {std::pair{0x1p-12, 0x1p-13}, std::pair{0x3p-9, 0.0}}) {
+            const auto [u, v] = ancestor_parameters(g, 1, s, t);
+            ASSERT_EQ(S1.evaluate(g, s, t), S0.evaluate(g / 4, u, v)) << name << " face " << g << " deep (" << s << ", " << t << ")";
+          }
+      }
     }
 }
 
@@ -320,6 +328,10 @@ TEST(LimitEvaluation, BadInputIsRefusedWithTypedErrors) {
   Mesh_d nm = tetrahedron();
   nm.faces.push_back({0, 1, 2});  // edge (0, 1) in three faces
   EXPECT_THROW((void)Approx(nm), Invalid_mesh);
+  Mesh_d pillow;  // two faces on the same three vertices
+  pillow.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  pillow.faces = {{0, 1, 2}, {0, 2, 1}};
+  EXPECT_EQ(code([&] { (void)Approx(pillow); }), Error_code::invalid_input);
   Mesh_d tags = icosphere(0);
   tags.tags.add_crease(0, 3);  // not an edge
   EXPECT_THROW((void)Approx(tags), Invalid_mesh);

@@ -11,9 +11,11 @@
 //   * the error bounds (basis_range, tangent_plane, direct) and the thesis'
 //     construction as printed: tightness (bound / sampled max offset) and
 //     samples outside (must be 0 for the bounds: otherwise the section fails).
+// --quick: levels 0..2, the slow kernels to level 1 (exact: creased box only).
 // Pictures (PNG) in DIR/subdivision/: each control mesh with its wire frame,
-// its limit mesh at level 3, and the level-2 limit mesh coloured by the width
+// its limit mesh at level 3 (2 with --quick), and the level-2 limit mesh coloured by the width
 // of the tangent-plane bound (log scale, blue small .. red large).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -68,6 +70,21 @@ Mesh_double creased_box() {
 
 std::string g3(double v) { return v == 0 ? "0" : format_g(v, 3); }
 
+// The limit mesh coloured by the width of the tangent-plane bound per face
+// (log scale; the range goes to the section's JSON).
+Image bounds_picture(const Subdivision_result& r, Section_report& rep, const std::string& name) {
+  Render_options ro;
+  ro.face_values = r.face_width;
+  double lo = INFINITY, hi = 0;
+  for (double w : r.face_width)
+    if (w > 0) lo = std::min(lo, w), hi = std::max(hi, w);
+  ro.value_min = std::isfinite(lo) ? lo : 1e-12, ro.value_max = hi > 0 ? hi : 1;
+  rep.json["pictures"][name + "_bounds_L2"] = {{"colour_scale", "log, blue = value_min, red = value_max"},
+                                               {"value_min", ro.value_min},
+                                               {"value_max", ro.value_max}};
+  return render_mesh(r.limit, ro, &r.refined);
+}
+
 }  // namespace
 
 Section_report subdivision_section(const Experiment_context& ctx) {
@@ -75,14 +92,15 @@ Section_report subdivision_section(const Experiment_context& ctx) {
   const std::vector<std::pair<std::string, Mesh_double>> meshes = {{"icosahedron", icosahedron()},
                                                                    {"creased-box", creased_box()}};
   const std::vector<std::string> kernels = {"double", "failsafe", "filtered", "mpfr-53", "float", "exact"};
-  const unsigned max_level = 4;
-  // The slow kernels where they stay feasible: MPFR up to level 3; GMP
-  // rationals up to level 2 on the creased box (valences 4 and 6: small
-  // denominators) and level 1 on the icosahedron (valence 5: the 256-bit
-  // rational cos(2 pi / 5) makes every coordinate thousands of bits long).
-  const auto feasible = [](const std::string& mesh, const std::string& kernel, unsigned level) {
-    if (kernel == "mpfr-53") return level <= 3;
-    if (kernel == "exact") return level <= (mesh == "icosahedron" ? 1u : 2u);
+  const unsigned max_level = ctx.quick ? 2 : 4;
+  // The slow kernels where they stay feasible (section budget one minute):
+  // MPFR up to level 2; GMP rationals up to level 2 on the creased box
+  // (valences 4 and 6: small denominators) and at level 0 on the icosahedron
+  // (valence 5: the 256-bit rational cos(2 pi / 5) makes coordinates
+  // thousands of bits long). Both with reduced bound depths.
+  const auto feasible = [&](const std::string& mesh, const std::string& kernel, unsigned level) {
+    if (kernel == "mpfr-53") return level <= (ctx.quick ? 1u : 2u);
+    if (kernel == "exact") return mesh == "icosahedron" ? !ctx.quick && level == 0 : level <= (ctx.quick ? 1u : 2u);
     return true;
   };
   Json rows = Json::array();
@@ -106,7 +124,7 @@ Section_report subdivision_section(const Experiment_context& ctx) {
         rq.samples = samples;
         rq.reference = &reference;
         rq.exact_limit_vertices = &exact_limit;
-        rq.small_bounds = kernel == "exact";
+        rq.small_bounds = kernel == "exact" || kernel == "mpfr-53";
         const Subdivision_result r = run_subdivision(mesh, rq);
         const double time = r.time_subdivision + r.time_bounds;
         long outside = 0;
@@ -145,23 +163,17 @@ Section_report subdivision_section(const Experiment_context& ctx) {
         j["time_s"] = {{"subdivision", r.time_subdivision}, {"bounds", r.time_bounds}};
         rows.push_back(j);
         // Pictures from the double runs.
-        if (kernel == "double" && (level == 0 || level == 2 || level == 3)) {
+        if (kernel == "double") {
           const auto dir = ctx.section_dir();
-          Render_options ro;
           if (level == 0) {
+            Render_options ro;
             ro.wire = true;
             write_png((dir / (name + "_control.png")).string(), render_mesh(r.refined, ro));
-          } else if (level == 3) {
-            write_png((dir / (name + "_limit_L3.png")).string(), render_mesh(r.limit, ro, &r.refined));
-          } else {
-            ro.face_values = r.face_width;
-            double lo = INFINITY, hi = 0;
-            for (double w : r.face_width)
-              if (w > 0) lo = std::min(lo, w), hi = std::max(hi, w);
-            ro.value_min = std::isfinite(lo) ? lo : 1e-12, ro.value_max = hi > 0 ? hi : 1;
-            rep.json["pictures"][name + "_bounds_L2"] = {{"value_min", ro.value_min}, {"value_max", ro.value_max}};
-            write_png((dir / (name + "_bounds_L2.png")).string(), render_mesh(r.limit, ro, &r.refined));
           }
+          if (level == 2) write_png((dir / (name + "_bounds_L2.png")).string(), bounds_picture(r, rep, name));
+          if (level == std::min(3u, max_level))
+            write_png((dir / (name + "_limit_L" + std::to_string(level) + ".png")).string(),
+                      render_mesh(r.limit, Render_options{}, &r.refined));
         }
       }
       t.add_rule();
@@ -177,8 +189,10 @@ Section_report subdivision_section(const Experiment_context& ctx) {
       "(GMP) evaluation at the dyadic points of every face (45 per face up to level 2, 15 beyond); rounding =\n"
       "max |limit vertex - exact limit vertex|; tightness = bound / sampled max normal offset (mean over faces;\n"
       "thesis = the construction as printed, not a bound); outside = samples outside a bound beyond 1e-13 x mesh\n"
-      "size (must be 0; float's single-precision bounds miss by its own rounding, ~1e-7). exact uses reduced\n"
-      "bound depths (irregular 2, regular 1, universal 3: hence looser); mpfr-53 up to level 3, exact where feasible.\n"
+      "size (must be 0; float's single-precision bounds miss by its own rounding, ~1e-7). exact and mpfr-53 use\n"
+      "reduced bound depths (irregular 2, regular 1, universal 3: hence looser) and run where feasible in the\n"
+      "section's minute (mpfr-53 to level 2; exact to level 2 on the creased box, level 0 on the icosahedron,\n"
+      "whose valence-5 weights are 256-bit rationals).\n"
       "Pictures: DIR/subdivision/<mesh>_control.png, <mesh>_limit_L3.png, <mesh>_bounds_L2.png (tangent-plane\n"
       "bound width per face, log colour scale blue..red).\n\n" +
       t.str();

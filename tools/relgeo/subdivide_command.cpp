@@ -33,7 +33,7 @@ Json bound_json(const Bound_summary& b) {
   return j;
 }
 
-std::string g3(double v) { return format_g(v, 3); }
+std::string g3(double v) { return v == 0 ? "0" : format_g(v, 3); }
 
 }  // namespace
 

@@ -118,6 +118,7 @@ struct Loop_rule_data {
   std::vector<std::uint8_t> crease;
   std::vector<Index> sector;
   bool special(Index v) const { return kind[v] == Vertex_kind::crease || kind[v] == Vertex_kind::corner; }
+  friend bool operator==(const Loop_rule_data&, const Loop_rule_data&) = default;
 };
 
 inline Loop_rule_data loop_rule_data(const Mesh_topology& t, const Loop_features& f) {
@@ -362,9 +363,9 @@ Mesh_topology local_topology(const Loop_local_patch<FT>& P) {
 /// vertex points of faces[0]'s vertices and the edge points of their edges
 /// are computed; they are exactly the vertices of the children's patches.
 template <class K>
-std::array<Loop_local_patch<typename K::FT>, 4> refine_local_patch(const Loop_local_patch<typename K::FT>& P,
-                                                                   const Mesh_topology& t, const Loop_weights<K>& w,
-                                                                   unsigned which) {
+std::array<Loop_local_patch<typename K::FT>, 4> refine_local_patch(
+    const Loop_local_patch<typename K::FT>& P, const Mesh_topology& t, const Loop_weights<K>& w, unsigned which,
+    std::vector<std::vector<Weighted<typename K::FT>>>* stencils = nullptr) {
   using FT = typename K::FT;
   const Index nv = P.number_of_vertices(), ne = static_cast<Index>(t.number_of_edges());
   const Index nf = static_cast<Index>(P.faces.size());
@@ -372,7 +373,10 @@ std::array<Loop_local_patch<typename K::FT>, 4> refine_local_patch(const Loop_lo
   std::vector<FT> cv((std::size_t(nv) + ne) * dim);
   std::vector<std::uint8_t> done(std::size_t(nv) + ne, 0);
   std::vector<Weighted<FT>> st;
+  std::vector<std::vector<Weighted<FT>>> used;  // per child vertex, when `stencils` is wanted
+  if (stencils) used.resize(std::size_t(nv) + ne);
   const auto apply = [&](Index target) {
+    if (stencils) used[target] = st;
     FT* out = cv.data() + std::size_t(target) * dim;
     for (std::size_t c = 0; c < dim; ++c) out[c] = FT(0);
     for (const auto& [v, wt] : st) {
@@ -462,6 +466,10 @@ std::array<Loop_local_patch<typename K::FT>, 4> refine_local_patch(const Loop_lo
     for (std::size_t i = 0; i < ids.size(); ++i) {
       Q.rules.kind.push_back(ckind[ids[i]]);
       std::copy_n(cv.data() + std::size_t(ids[i]) * dim, dim, Q.values.data() + i * dim);
+    }
+    if (stencils) {  // the stencils of the (single) requested child's vertices
+      stencils->clear();
+      for (Index v : ids) stencils->push_back(used[v]);
     }
   }
   return out;
@@ -655,6 +663,10 @@ FT ft_from_rational(const mpq_class& q) {
     FT r;
     mpfr_set_q(const_cast<mpfr_ptr>(r.get()), q.get_mpq_t(), MPFR_RNDN);
     return r;
+  } else if constexpr (std::is_same_v<FT, long double>) {
+    Mpfr_temp t(128);
+    mpfr_set_q(t.v, q.get_mpq_t(), MPFR_RNDN);
+    return mpfr_get_ld(t.v, MPFR_RNDN);
   } else {
     Mpfr_temp t(64);
     mpfr_set_q(t.v, q.get_mpq_t(), MPFR_RNDN);
@@ -680,6 +692,9 @@ inline bool in_parameter_triangle(double u, double v) {
 /// kind and the 12 control slots of regular patches: O(V + F)); it throws
 /// like Loop_subdivider (Invalid_mesh, Non_finite_input). Every query is
 /// const and allocates its own scratch: one object can serve many threads.
+///
+/// Meshes with two faces sharing two edges (a vertex of valence 2) are
+/// refused with Invalid_input: their Loop refinement is not a manifold.
 ///
 /// Queries validate their input: a face index out of range or (u, v) outside
 /// the triangle throws Invalid_surface_parameter; NaN/infinite parameters
@@ -708,6 +723,16 @@ class Loop_limit_surface {
       points_.push_back(Point_3<FT>{A::x(control.vertices[v]), A::y(control.vertices[v]), A::z(control.vertices[v])});
     }
     topology_ = Mesh_topology::build(control);
+    // Two faces sharing two edges (around a vertex of valence 2, or a
+    // "pillow" of two faces on the same three vertices) refine into a
+    // non-manifold mesh: refused.
+    for (Index f = 0; f < topology_.number_of_faces(); ++f)
+      for (int i = 0; i < 3; ++i) {
+        const Index a = topology_.opposite(3 * f + i), b = topology_.opposite(3 * f + (i + 1) % 3);
+        if (a != invalid_index && b != invalid_index && a / 3 == b / 3)
+          throw Invalid_input("Loop limit surface: faces " + std::to_string(f) + " and " + std::to_string(a / 3) +
+                              " share two edges (a vertex of valence 2): the refinement is not a manifold");
+      }
     features_ = classify_loop_features(topology_, control.tags);
     rules_ = internal::loop_rule_data(topology_, features_);
     Index max_valence = 6;
@@ -858,9 +883,14 @@ class Loop_limit_surface {
     return r;
   }
 
-  // Local subdivision until the sub-patch holding (u, v) is regular.
+  // Local subdivision until the sub-patch holding (u, v) is regular. Along
+  // the descent towards a smooth extraordinary vertex the local patch repeats
+  // itself after one step (same faces, same rule data: Stam's subdivision
+  // matrix); the last step's stencils are then reused, skipping the
+  // topology, the classification and the extraction.
   Loop_limit_jet<FT> irregular(Index f, double u0, double v0, bool derivatives) const {
     using Patch = internal::Loop_local_patch<FT>;
+    using Stencils = std::vector<std::vector<internal::Weighted<FT>>>;
     Patch P = internal::extract_local_patch<FT>(topology_, rules_, f, 3, [&](Index v, FT* out) {
       out[0] = points_[v].x, out[1] = points_[v].y, out[2] = points_[v].z;
     });
@@ -869,35 +899,54 @@ class Loop_limit_surface {
     // J = d(s, t) / d(u0, v0) of the current patch's parameters.
     FT J[2][2] = {{FT(1), FT(0)}, {FT(0), FT(1)}};
     const Loop_options& o = options();
+    struct Memo {  // the last irregular step: its patch's structure and its child
+      std::vector<Triangle> faces;
+      internal::Loop_rule_data rules;
+      bool corner_regular[3] = {false, false, false};
+      int child = -1;
+      std::vector<Triangle> child_faces;
+      internal::Loop_rule_data child_rules;
+      Stencils stencils;
+    } memo;
+    bool have_memo = false;
     for (unsigned level = 0;; ++level) {
-      const Mesh_topology t = internal::local_topology(P);
-      std::array<internal::Patch_slot, 12> s;
-      if (internal::classify_loop_patch(t, P.rules, o, 0, &s) != Loop_patch_kind::irregular) {
-        std::array<Point_3<FT>, 12> net;
-        for (int i = 0; i < 12; ++i) {
-          const FT* a = P.value(s[i].a);
-          net[i] = {a[0], a[1], a[2]};
-          if (s[i].is_ghost()) {
-            const FT *b = P.value(s[i].b), *c = P.value(s[i].c);
-            net[i] = {FT(FT(a[0] + b[0]) - c[0]), FT(FT(a[1] + b[1]) - c[1]), FT(FT(a[2] + b[2]) - c[2])};
+      const bool repeated = have_memo && P.faces == memo.faces && P.rules == memo.rules;
+      Mesh_topology t;
+      bool corner_regular[3];
+      if (repeated) {
+        std::copy_n(memo.corner_regular, 3, corner_regular);
+      } else {
+        t = internal::local_topology(P);
+        std::array<internal::Patch_slot, 12> s;
+        if (internal::classify_loop_patch(t, P.rules, o, 0, &s) != Loop_patch_kind::irregular) {
+          std::array<Point_3<FT>, 12> net;
+          for (int i = 0; i < 12; ++i) {
+            const FT* a = P.value(s[i].a);
+            net[i] = {a[0], a[1], a[2]};
+            if (s[i].is_ghost()) {
+              const FT *b = P.value(s[i].b), *c = P.value(s[i].c);
+              net[i] = {FT(FT(a[0] + b[0]) - c[0]), FT(FT(a[1] + b[1]) - c[1]), FT(FT(a[2] + b[2]) - c[2])};
+            }
           }
+          const auto bez = loop_patch_to_bezier(net, one_24_);
+          const FT us = internal::ft_from_rational<FT>(u), vs = internal::ft_from_rational<FT>(v);
+          if (!derivatives) return jet(evaluate_quartic_bezier(bez, us, vs), {}, {}, level);
+          const auto j = evaluate_quartic_bezier_jet(bez, us, vs);
+          // [S_u0 S_v0] = [Q_s Q_t] J
+          const auto comb = [&](const Point_3<FT>& a, const FT& x, const Point_3<FT>& b, const FT& y) {
+            return Point_3<FT>{FT(FT(a.x * x) + FT(b.x * y)), FT(FT(a.y * x) + FT(b.y * y)), FT(FT(a.z * x) + FT(b.z * y))};
+          };
+          return jet(j.position, comb(j.du, J[0][0], j.dv, J[1][0]), comb(j.du, J[0][1], j.dv, J[1][1]), level);
         }
-        const auto bez = loop_patch_to_bezier(net, one_24_);
-        const FT us = internal::ft_from_rational<FT>(u), vs = internal::ft_from_rational<FT>(v);
-        if (!derivatives) return jet(evaluate_quartic_bezier(bez, us, vs), {}, {}, level);
-        const auto j = evaluate_quartic_bezier_jet(bez, us, vs);
-        // [S_u0 S_v0] = [Q_s Q_t] J
-        const auto comb = [&](const Point_3<FT>& a, const FT& x, const Point_3<FT>& b, const FT& y) {
-          return Point_3<FT>{FT(FT(a.x * x) + FT(b.x * y)), FT(FT(a.y * x) + FT(b.y * y)), FT(FT(a.z * x) + FT(b.z * y))};
-        };
-        return jet(j.position, comb(j.du, J[0][0], j.dv, J[1][0]), comb(j.du, J[0][1], j.dv, J[1][1]), level);
+        for (int k = 0; k < 3; ++k) corner_regular[k] = internal::patch_corner_is_regular(t, P.rules, o, 0, k);
       }
       // At an irregular corner itself: its exact limit position and tangent plane.
       int corner = -1;
       if (sgn(u) == 0 && sgn(v) == 0) corner = 0;
       else if (u == one) corner = 1;
       else if (v == one) corner = 2;
-      if (corner >= 0 && !internal::patch_corner_is_regular(t, P.rules, o, 0, corner)) {
+      if (corner >= 0 && !corner_regular[corner]) {
+        if (repeated) t = internal::local_topology(P);
         const Index a = P.faces[0][corner];
         const auto val = internal::exact_limit_values(t, P.rules, weights_, a, 3, P.values.data());
         Loop_limit_jet<FT> r;
@@ -927,7 +976,25 @@ class Loop_limit_surface {
         for (int r = 0; r < 2; ++r)
           for (int k = 0; k < 2; ++k) J[r][k] = N[r][k];
       }
-      auto children = internal::refine_local_patch<K>(P, t, weights_, 1u << c);
+      if (repeated && memo.child == c) {
+        Patch Q;
+        Q.dim = 3;
+        Q.faces = memo.child_faces;
+        Q.rules = memo.child_rules;
+        Q.values.assign(memo.stencils.size() * 3, FT(0));
+        for (std::size_t i = 0; i < memo.stencils.size(); ++i)
+          for (const auto& [x, wt] : memo.stencils[i])
+            for (int k = 0; k < 3; ++k) Q.values[i * 3 + k] = FT(Q.values[i * 3 + k] + FT(wt * P.values[std::size_t(x) * 3 + k]));
+        P = std::move(Q);
+        continue;
+      }
+      if (repeated) t = internal::local_topology(P);
+      Stencils st;
+      auto children = internal::refine_local_patch<K>(P, t, weights_, 1u << c, &st);
+      memo.faces = P.faces, memo.rules = P.rules, memo.child = c;
+      std::copy_n(corner_regular, 3, memo.corner_regular);
+      memo.child_faces = children[c].faces, memo.child_rules = children[c].rules, memo.stencils = std::move(st);
+      have_memo = true;
       P = std::move(children[c]);
     }
   }

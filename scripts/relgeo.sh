@@ -13,6 +13,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 build=${RELGEO_BUILD_DIR:-$root/build}
+# ccache (when installed) hashes paths relative to the checkout, so clones in
+# other folders (CI) reuse each other's objects.
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
 jobs=${RELGEO_JOBS:-$(nproc)}
 
 # What each package is for: README.md, section "Dependencies".

@@ -38,17 +38,9 @@ namespace relgeo {
 template <OrientationKernel_2 K>
 Hull_result<typename K::Point_2> graham_fortune(std::span<const typename K::Point_2> points,
                                                 const K& k = K{}) {
-  using Point = typename K::Point_2;
-  internal::require_finite_points<Point>(points, "graham_fortune");
-  Hull_result<Point> r;
-  const internal::Sorted_input<K> sorted(points, k, &r.uncertain_answers);
-  const std::size_t m = sorted.size();
-  std::vector<std::size_t> chain;  // positions in `sorted`
-  if (m <= 2) {
-    for (std::size_t i = 0; i < m; ++i) chain.push_back(i);
-  } else {
+  return internal::sorted_hull(points, k, "graham_fortune", [&](const auto& sorted, auto& chain, auto& r) {
     const auto orientation = k.orientation_2_object();
-    const std::size_t L = 0, R = m - 1;
+    const std::size_t L = 0, R = sorted.size() - 1;
     // The split by the triangle test against line LR is evaluated on the fly
     // in each scan (no candidate lists: memory stays at the sorted copy).
     auto side_is = [&](Certified_sign wanted) {
@@ -71,10 +63,7 @@ Hull_result<typename K::Point_2> graham_fortune(std::span<const typename K::Poin
                          k, chain, lower_size - 1, r);
     internal::scan_chain(sorted, std::span(ends + 1, 1), k, chain, lower_size - 1, r);  // upper R .. L
     chain.pop_back();  // L again
-  }
-  r.indices = sorted.indices(chain);
-  internal::attach_points(r, points);
-  return r;
+  });
 }
 
 template <OrientationKernel_2 K, class Range>

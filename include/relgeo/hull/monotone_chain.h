@@ -27,24 +27,14 @@ namespace relgeo {
 template <OrientationKernel_2 K>
 Hull_result<typename K::Point_2> monotone_chain(std::span<const typename K::Point_2> points,
                                                 const K& k = K{}) {
-  using Point = typename K::Point_2;
-  internal::require_finite_points<Point>(points, "monotone_chain");
-  Hull_result<Point> r;
-  const internal::Sorted_input<K> sorted(points, k, &r.uncertain_answers);
-  const std::size_t m = sorted.size();
-  std::vector<std::size_t> chain;  // positions in `sorted`
-  if (m <= 2) {
-    for (std::size_t i = 0; i < m; ++i) chain.push_back(i);
-  } else {
+  return internal::sorted_hull(points, k, "monotone_chain", [&](const auto& sorted, auto& chain, auto& r) {
+    const std::size_t m = sorted.size();
     internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m), k, chain, 0, r);  // lower, L..R
     const std::size_t lower_size = chain.size();
     internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m - 1) | std::views::reverse, k,
                          chain, lower_size - 1, r);  // upper, R..L
     chain.pop_back();  // L again
-  }
-  r.indices = sorted.indices(chain);
-  internal::attach_points(r, points);
-  return r;
+  });
 }
 
 /// Overload for any contiguous range of K::Point_2 (std::vector, std::array...).

@@ -152,6 +152,28 @@ void attach_points(Hull_result<Point>& r, std::span<const Point> points) {
   for (std::size_t i : r.indices) r.points.push_back(points[i]);
 }
 
+/// The frame shared by the sorting hull algorithms: checks the input, sorts it
+/// (Sorted_input), answers the 0-2 distinct point cases, lets `scan(sorted,
+/// chain, result)` build the hull as positions of the sorted input (for 3 or
+/// more distinct points), and returns the result with input indices and points.
+template <class K, class Scan>
+Hull_result<typename K::Point_2> sorted_hull(std::span<const typename K::Point_2> points, const K& k,
+                                             const char* who, Scan&& scan) {
+  using Point = typename K::Point_2;
+  require_finite_points<Point>(points, who);
+  Hull_result<Point> r;
+  const Sorted_input<K> sorted(points, k, &r.uncertain_answers);
+  std::vector<std::size_t> chain;  // positions in `sorted`
+  if (sorted.size() <= 2) {
+    for (std::size_t i = 0; i < sorted.size(); ++i) chain.push_back(i);
+  } else {
+    scan(sorted, chain, r);
+  }
+  r.indices = sorted.indices(chain);
+  attach_points(r, points);
+  return r;
+}
+
 /// Rotates a cyclic index sequence to start at its lexicographically smallest
 /// point (ties by index), as the output convention asks.
 template <class K>

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <random>
 
 #include "hull_inputs.h"
 #include "relgeo/error.h"
@@ -114,12 +115,48 @@ TYPED_TEST(HullKernels, DegenerateInputHasDocumentedResults) {
   (void)k;
 }
 
+TYPED_TEST(HullKernels, SignedZerosAreOnePointReportedByItsSmallestIndex) {
+  using K = TypeParam;
+  // -0.0 == 0.0: (0, -0) at index 1 and (-0, 0) at index 3 are one hull vertex.
+  const auto pts = to_kernel<K>({{4, 0}, {0, -0.0}, {2, 3}, {-0.0, 0}, {1, 1}});
+  for (Algorithm a : kAlgorithms)
+    EXPECT_EQ(run<K>(a, pts).indices, (std::vector<std::size_t>{1, 0, 2})) << K::name();
+}
+
 TYPED_TEST(HullKernels, NonFiniteInputIsRejectedWithATypedError) {
   using K = TypeParam;
   if constexpr (!K::has_exact_constructions && !std::is_same_v<K, Mpfr_kernel<53>>) {
     for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
       const auto pts = to_kernel<K>({{0, 0}, {1, bad}, {2, 0}});
       for (Algorithm a : kAlgorithms) EXPECT_THROW(run<K>(a, pts), Non_finite_input) << K::name();
+    }
+  }
+}
+
+// Exact_kernel runs on the points' doubles (Filtered_exact_kernel) when every
+// coordinate is one exactly, and in rationals otherwise: both paths must give
+// the same hull. x / 3 + 1 / 7 is never a double, and scaling and translating
+// keep every orientation sign.
+TEST(HullExactKernel, RationalAndDoublePathsAgree) {
+  const Exact_kernel k;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    // 60 points of a 9 x 9 integer grid: duplicates and collinear triples abound.
+    std::mt19937_64 random(seed);
+    std::vector<P2> grid(60);
+    for (auto& p : grid) p = {double(random() % 9), double(random() % 9)};
+    std::vector<Exact_kernel::Point_2> thirds, integers;
+    for (const auto& p : grid) {
+      integers.push_back(k.construct_point_2_object()(p.x, p.y));
+      const mpq_class shift(1, 7);
+      thirds.push_back({mpq_class(integers.back().x / 3 + shift), mpq_class(integers.back().y / 3 + shift)});
+      ASSERT_FALSE(Exact_kernel::exact_double_point(thirds.back()).has_value());
+    }
+    for (Algorithm a : kAlgorithms) {
+      const auto on_doubles = run<Exact_kernel>(a, integers);
+      const auto in_rationals = run<Exact_kernel>(a, thirds);
+      EXPECT_EQ(in_rationals.indices, on_doubles.indices) << seed;
+      EXPECT_EQ(in_rationals.predicate_calls, on_doubles.predicate_calls) << seed;
+      EXPECT_EQ(on_doubles.indices, run<Filtered_exact_kernel>(a, grid).indices) << seed;
     }
   }
 }

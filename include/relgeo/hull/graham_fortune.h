@@ -1,7 +1,6 @@
 // relgeo/hull/graham_fortune.h — Fortune's stable Graham scan (thesis Sec. 3.3.3).
 #pragma once
 
-#include <ranges>
 #include <span>
 #include <vector>
 
@@ -17,12 +16,12 @@ namespace relgeo {
 ///
 /// 1. Sort the points lexicographically; L and R are the first and the last.
 /// 2. Split the others by the triangle test against the line LR: certainly
-///    left of L->R go to the upper candidates, certainly right to the lower
-///    candidates; an `uncertain` (or zero) answer drops the point — it lies
-///    within the test's uncertainty of segment LR, inside the hull up to that.
-/// 3. Scan each candidate chain with a stack, keeping the middle point of a
-///    triple only on a *certain* left turn (fail-safe: ambiguous points are
-///    dropped).
+///    left of L->R go to the upper chain, certainly right to the lower chain;
+///    an `uncertain` (or zero) answer drops the point — it lies within the
+///    test's uncertainty of segment LR, inside the hull up to that.
+/// 3. Scan each chain with a stack from L to R, keeping the middle point of a
+///    triple only on a *certain* turn outwards (left on the lower chain, right
+///    on the upper one; fail-safe: ambiguous points are dropped).
 ///
 /// With a kernel whose definite answers are exact (Failsafe_kernel and every
 /// certified kernel), every kept triple is an exact strict turn, so the output
@@ -38,31 +37,35 @@ namespace relgeo {
 template <OrientationKernel_2 K>
 Hull_result<typename K::Point_2> graham_fortune(std::span<const typename K::Point_2> points,
                                                 const K& k = K{}) {
+  if constexpr (internal::Exact_on_doubles<K>)  // the same exact signs, on doubles
+    if (auto r = internal::hull_on_exact_doubles<K>(
+            points, [](auto doubles, const auto& kernel) { return graham_fortune(doubles, kernel); }))
+      return std::move(*r);
   return internal::sorted_hull(points, k, "graham_fortune", [&](const auto& sorted, auto& chain, auto& r) {
     const auto orientation = k.orientation_2_object();
     const std::size_t L = 0, R = sorted.size() - 1;
-    // The split by the triangle test against line LR is evaluated on the fly
-    // in each scan (no candidate lists: memory stays at the sorted copy).
-    auto side_is = [&](Certified_sign wanted) {
-      return [&, wanted](std::size_t p) {
-        const Certified_sign s = orientation(sorted.point(L), sorted.point(R), sorted.point(p));
-        ++r.predicate_calls;
-        r.uncertain_answers += (wanted == Certified_sign::negative && s == Certified_sign::uncertain);
-        return s == wanted;
-      };
-    };
-    const std::size_t ends[2] = {R, L};
+    // One pass from L to R: each point is tested once against line LR and
+    // extends the chain on its side. The upper chain is scanned left to right
+    // too, keeping a middle point only on a certain *right* turn: that is the
+    // lower-chain rule on the input mirrored in the x axis, which negates
+    // every determinant exactly and leaves every error bound unchanged, so
+    // Fortune's guarantee carries over. (One test per point instead of one
+    // per chain, and no candidate lists: memory stays at the sorted copy.)
+    std::vector<std::size_t> upper{L};
     chain.push_back(L);
-    internal::scan_chain(sorted, std::views::iota(L + 1, R) | std::views::filter(side_is(Certified_sign::negative)),
-                         k, chain, 0, r);
-    internal::scan_chain(sorted, std::span(ends, 1), k, chain, 0, r);  // lower chain L .. R
-    const std::size_t lower_size = chain.size();
-    internal::scan_chain(sorted,
-                         std::views::iota(L + 1, R) | std::views::reverse |
-                             std::views::filter(side_is(Certified_sign::positive)),
-                         k, chain, lower_size - 1, r);
-    internal::scan_chain(sorted, std::span(ends + 1, 1), k, chain, lower_size - 1, r);  // upper R .. L
-    chain.pop_back();  // L again
+    for (std::size_t p = L + 1; p < R; ++p) {
+      const Certified_sign side = orientation(sorted.point(L), sorted.point(R), sorted.point(p));
+      ++r.predicate_calls;
+      r.uncertain_answers += (side == Certified_sign::uncertain);
+      if (side == Certified_sign::negative)
+        internal::extend_chain(sorted, p, orientation, Certified_sign::positive, chain, 0, r);
+      else if (side == Certified_sign::positive)
+        internal::extend_chain(sorted, p, orientation, Certified_sign::negative, upper, 0, r);
+    }
+    internal::extend_chain(sorted, R, orientation, Certified_sign::positive, chain, 0, r);
+    internal::extend_chain(sorted, R, orientation, Certified_sign::negative, upper, 0, r);
+    // chain = lower L .. R, then the upper chain back from R to L (both ends shared).
+    chain.insert(chain.end(), upper.rbegin() + 1, upper.rend() - 1);
   });
 }
 

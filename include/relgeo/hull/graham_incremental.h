@@ -41,6 +41,10 @@ namespace relgeo {
 template <OrientationKernel_2 K>
 Hull_result<typename K::Point_2> graham_incremental(std::span<const typename K::Point_2> points,
                                                     const K& k = K{}) {
+  if constexpr (internal::Exact_on_doubles<K>)  // the same exact signs, on doubles
+    if (auto r = internal::hull_on_exact_doubles<K>(
+            points, [](auto doubles, const auto& kernel) { return graham_incremental(doubles, kernel); }))
+      return std::move(*r);
   using Point = typename K::Point_2;
   internal::require_finite_points<Point>(points, "graham_incremental");
   Hull_result<Point> r;

@@ -27,6 +27,10 @@ namespace relgeo {
 template <OrientationKernel_2 K>
 Hull_result<typename K::Point_2> monotone_chain(std::span<const typename K::Point_2> points,
                                                 const K& k = K{}) {
+  if constexpr (internal::Exact_on_doubles<K>)  // the same exact signs, on doubles
+    if (auto r = internal::hull_on_exact_doubles<K>(
+            points, [](auto doubles, const auto& kernel) { return monotone_chain(doubles, kernel); }))
+      return std::move(*r);
   return internal::sorted_hull(points, k, "monotone_chain", [&](const auto& sorted, auto& chain, auto& r) {
     const std::size_t m = sorted.size();
     internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m), k, chain, 0, r);  // lower, L..R

@@ -1,7 +1,7 @@
 // relgeo/hull/internal/chain_scan.h — the stack scan shared by Andrew's
 // monotone chain and Fortune's Graham scan: the middle point of the last
-// triple is kept only on a *certain* left turn, so an `uncertain` answer drops
-// it (Fortune's fail-safe rule).
+// triple is kept only on a *certain* turn the right way, so an `uncertain`
+// answer drops it (Fortune's fail-safe rule).
 #pragma once
 
 #include <cstddef>
@@ -14,23 +14,31 @@
 
 namespace relgeo::internal {
 
-/// Extends `chain` (positions in the sorted input) through `positions`, in
-/// order; the stack never pops below chain[chain_floor].
+/// Pushes position `r` onto `chain` (positions in the sorted input), first
+/// popping every middle point whose turn to r is not certainly `keep`; the
+/// stack never pops below chain[chain_floor].
+template <class Sorted, class Orientation, class Point>
+void extend_chain(const Sorted& input, std::size_t r, const Orientation& orientation, Certified_sign keep,
+                  std::vector<std::size_t>& chain, std::size_t chain_floor, Hull_result<Point>& stats) {
+  while (chain.size() >= chain_floor + 2) {
+    const Certified_sign s =
+        orientation(input.point(chain[chain.size() - 2]), input.point(chain.back()), input.point(r));
+    ++stats.predicate_calls;
+    stats.uncertain_answers += (s == Certified_sign::uncertain);
+    if (s == keep) break;
+    chain.pop_back();
+  }
+  chain.push_back(r);
+}
+
+/// Extends `chain` through `positions`, in order, keeping a middle point
+/// only on a certain left turn.
 template <class K, class Sorted, class Positions, class Point>
 void scan_chain(const Sorted& input, Positions&& positions, const K& k,
                 std::vector<std::size_t>& chain, std::size_t chain_floor, Hull_result<Point>& stats) {
   const auto orientation = k.orientation_2_object();
-  for (std::size_t r : positions) {
-    while (chain.size() >= chain_floor + 2) {
-      const Certified_sign s = orientation(input.point(chain[chain.size() - 2]),
-                                           input.point(chain.back()), input.point(r));
-      ++stats.predicate_calls;
-      stats.uncertain_answers += (s == Certified_sign::uncertain);
-      if (s == Certified_sign::positive) break;
-      chain.pop_back();
-    }
-    chain.push_back(r);
-  }
+  for (std::size_t r : positions)
+    extend_chain(input, r, orientation, Certified_sign::positive, chain, chain_floor, stats);
 }
 
 }  // namespace relgeo::internal

@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <random>
+#include <span>
 
 #include "hull_inputs.h"
 #include "relgeo/error.h"
@@ -52,6 +55,69 @@ TEST(HullProperties, ExactPredicatesAlwaysGiveTheExactHull) {
       ASSERT_EQ(points_at(input, graham_incremental<Filtered_exact_kernel>(input).indices), exact) << seed;
       ASSERT_EQ(hull_error(input, f.indices).value, 0.0);
     }
+  }
+}
+
+// Inputs large enough for the Akl-Toussaint prefilter (>= 1024 points, most
+// of them interior): a uniform cloud inside a square whose edges and corners
+// carry points moved by a few ulps, or inside a circle of points, so the
+// polygon of extreme points has near-degenerate edges.
+std::vector<P2> prefilter_input(std::uint64_t seed) {
+  std::mt19937_64 g(seed);
+  auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (static_cast<double>(g() >> 11) * 0x1p-53); };
+  auto ulps = [&] { return static_cast<int>(g() % 7) - 3; };
+  std::vector<P2> pts;
+  for (int i = 0; i < 1200; ++i) pts.push_back({uniform(-0.999, 0.999), uniform(-0.999, 0.999)});
+  for (int i = 0; i < 200; ++i) {
+    const double t = uniform(-1, 1);
+    if (seed % 2 == 0) {  // square edges and corners
+      const P2 q = i % 5 == 0 ? P2{i % 2 ? 1.0 : -1.0, i % 3 ? 1.0 : -1.0}
+                   : i % 4 == 1 ? P2{1.0, t} : i % 4 == 2 ? P2{t, 1.0} : i % 4 == 3 ? P2{-1.0, t} : P2{t, -1.0};
+      pts.push_back({moved_by_ulps(q.x, ulps()), moved_by_ulps(q.y, ulps())});
+    } else {  // circle
+      const double a = 3.141592653589793 * t;
+      pts.push_back({moved_by_ulps(1.5 * std::cos(a), ulps()), moved_by_ulps(1.5 * std::sin(a), ulps())});
+    }
+  }
+  std::shuffle(pts.begin(), pts.end(), g);
+  return pts;
+}
+
+TEST(HullPrefilter, DropsOnlyPointsStrictlyInsideTheExactHull) {
+  const Filtered_exact_kernel exact;
+  const auto orientation = exact.orientation_2_object();
+  for (std::uint64_t seed = 0; seed < case_count(200); ++seed) {
+    const auto input = prefilter_input(seed);
+    const auto hull = exact_hull(input);
+    auto check = [&](const auto& kernel) {
+      Hull_result<P2> stats;
+      const auto kept = internal::interior_prefilter(std::span<const P2>(input), kernel, stats);
+      ASSERT_TRUE(kept.has_value()) << seed;
+      EXPECT_LT(kept->count(), input.size() / 2) << seed;  // it does drop the cloud
+      for (std::size_t i = 0; i < input.size(); ++i) {
+        if (kept->test(i)) continue;
+        for (std::size_t e = 0; e < hull.size(); ++e)
+          ASSERT_EQ(orientation(hull[e], hull[(e + 1) % hull.size()], input[i]), Certified_sign::positive)
+              << "seed " << seed << " point " << i;
+      }
+    };
+    check(Failsafe_kernel<double>{});
+    check(exact);
+  }
+}
+
+TEST(HullPrefilter, SameExactHullAndFortuneStillWithinItsBound) {
+  const Hull_options all_points{.discard_interior = false};
+  for (std::uint64_t seed = 0; seed < case_count(200); ++seed) {
+    const auto input = prefilter_input(seed);
+    const auto with = graham_fortune<Filtered_exact_kernel>(input);
+    EXPECT_EQ(with.indices, graham_fortune<Filtered_exact_kernel>(input, {}, all_points).indices) << seed;
+    EXPECT_EQ(with.indices, monotone_chain<Filtered_exact_kernel>(input).indices) << seed;
+    const auto failsafe = graham_fortune<Failsafe_kernel<double>>(input);
+    ASSERT_TRUE(is_convex_position(points_at(input, failsafe.indices))) << seed;
+    const auto bound = graham_fortune_backward_error_bound<Failsafe_kernel<double>>(input);
+    ASSERT_TRUE(bound.has_value());
+    EXPECT_LE(hull_backward_error(input, failsafe.indices).value, *bound) << seed;
   }
 }
 

@@ -42,6 +42,29 @@ TEST(LoopBadInput, NanAndInfinityAreNonFiniteInput) {
   EXPECT_THROW((void)loop_subdivide(iv, 1), Non_finite_input);
 }
 
+TEST(LoopBadInput, TwoFacesSharingTwoEdgesAreRefusedEverywhere) {
+  // A tetrahedron (faces 0-3) next to a two-face pillow on vertices 4, 5, 6:
+  // a closed, oriented, edge-manifold mesh whose refinement would not be.
+  Mesh_d m = tetrahedron();
+  const Index base = static_cast<Index>(m.vertices.size());
+  m.vertices.push_back({3, 0, 0}), m.vertices.push_back({4, 0, 0}), m.vertices.push_back({3, 1, 0});
+  m.faces.push_back({base, base + 1, base + 2});
+  m.faces.push_back({base, base + 2, base + 1});
+  for (auto refuse : {+[](const Mesh_d& x) { (void)loop_subdivide(x, 1); },
+                      +[](const Mesh_d& x) { (void)loop_limit_mesh(x, 1); },
+                      +[](const Mesh_d& x) { (void)Loop_limit_surface<Filtered_exact_kernel>(x); }}) {
+    try {
+      refuse(m);
+      ADD_FAILURE() << "accepted";
+    } catch (const Invalid_input& e) {
+      EXPECT_EQ(e.code(), Error_code::invalid_input);
+      EXPECT_NE(std::string(e.what()).find("faces 4 and 5 share two edges"), std::string::npos) << e.what();
+    }
+  }
+  m.faces.pop_back(), m.faces.pop_back(), m.vertices.resize(base);
+  EXPECT_EQ(loop_subdivide(m, 1).faces.size(), 16u);  // the tetrahedron alone is fine
+}
+
 TEST(LoopBadInput, NonManifoldEdgesAndVerticesAndMisorientationAreNamed) {
   Mesh_d m = tetrahedron();
   m.faces.push_back({0, 1, 3});

@@ -14,6 +14,9 @@ namespace relgeo {
 /// \brief Fortune's stable Graham scan (S. Fortune, "Stable maintenance of
 /// point set triangulations in two dimensions", FOCS 1989; thesis Sec. 3.3.3).
 ///
+/// 0. Unless options.discard_interior is false, drop the points certified to
+///    lie strictly inside the polygon of 8 extreme points (Akl-Toussaint,
+///    Hull_options): the same exact hull, the same backward-error bound.
 /// 1. Sort the points lexicographically; L and R are the first and the last.
 /// 2. Split the others by the triangle test against the line LR: certainly
 ///    left of L->R go to the upper chain, certainly right to the lower chain;
@@ -31,17 +34,19 @@ namespace relgeo {
 /// at most that much. With exact predicates it is the exact hull.
 ///
 /// \tparam K an OrientationKernel_2.
+/// \param options Hull_options (the prefilter of step 0).
 /// \return the hull (hull_result.h); special cases as for monotone_chain.
 /// \throws Non_finite_input if a coordinate is NaN or infinite.
 /// Complexity: O(n log n) comparisons + O(n) orientation tests.
 template <OrientationKernel_2 K>
 Hull_result<typename K::Point_2> graham_fortune(std::span<const typename K::Point_2> points,
-                                                const K& k = K{}) {
+                                                const K& k = K{},
+                                                const Hull_options& options = {}) {
   if constexpr (internal::Exact_on_doubles<K>)  // the same exact signs, on doubles
     if (auto r = internal::hull_on_exact_doubles<K>(
-            points, [](auto doubles, const auto& kernel) { return graham_fortune(doubles, kernel); }))
+            points, [&](auto doubles, const auto& kernel) { return graham_fortune(doubles, kernel, options); }))
       return std::move(*r);
-  return internal::sorted_hull(points, k, "graham_fortune", [&](const auto& sorted, auto& chain, auto& r) {
+  return internal::sorted_hull(points, k, options, "graham_fortune", [&](const auto& sorted, auto& chain, auto& r) {
     const auto orientation = k.orientation_2_object();
     const std::size_t L = 0, R = sorted.size() - 1;
     // One pass from L to R: each point is tested once against line LR and
@@ -71,8 +76,9 @@ Hull_result<typename K::Point_2> graham_fortune(std::span<const typename K::Poin
 
 template <OrientationKernel_2 K, class Range>
   requires std::convertible_to<Range&, std::span<const typename K::Point_2>>
-Hull_result<typename K::Point_2> graham_fortune(const Range& points, const K& k = K{}) {
-  return graham_fortune<K>(std::span<const typename K::Point_2>(points), k);
+Hull_result<typename K::Point_2> graham_fortune(const Range& points, const K& k = K{},
+                                                const Hull_options& options = {}) {
+  return graham_fortune<K>(std::span<const typename K::Point_2>(points), k, options);
 }
 
 }  // namespace relgeo

@@ -28,4 +28,19 @@ struct Hull_result {
   bool ok() const { return status == Hull_status::ok; }
 };
 
+/// Options of the sorting hull algorithms (graham_fortune, monotone_chain).
+struct Hull_options {
+  /// Akl-Toussaint prefilter: before sorting, drop every point the kernel
+  /// *certifies* to lie strictly left of each edge of the polygon through the
+  /// extreme points in the 8 directions of the axes and diagonals. Such a
+  /// point is strictly inside the hull of input points that are kept, so the
+  /// exact hull is unchanged, and a fail-safe output within distance d of
+  /// every kept point is within d of it too (the bound of
+  /// graham_fortune_backward_error_bound still holds). Applies to relgeo
+  /// points of float, double or long double under a certified kernel (and so
+  /// to Exact_kernel on doubles); otherwise nothing is dropped. Set false to
+  /// run the scan on every point, as the thesis states it.
+  bool discard_interior = true;
+};
+
 }  // namespace relgeo

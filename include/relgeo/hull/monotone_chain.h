@@ -20,18 +20,21 @@ namespace relgeo {
 ///
 /// \tparam K an OrientationKernel_2 (orientation_2, compare_xy_2).
 /// \param points the input; may be empty, contain duplicates or be collinear.
+/// \param options Hull_options: by default certainly interior points are
+///   dropped before sorting (Akl-Toussaint), which leaves the exact hull as it is.
 /// \return the hull (hull_result.h); 1 index for one distinct point, the two
 ///   extreme points for collinear input, nothing for empty input.
 /// \throws Non_finite_input if a coordinate is NaN or infinite.
 /// Complexity: O(n log n) comparisons + O(n) orientation tests.
 template <OrientationKernel_2 K>
 Hull_result<typename K::Point_2> monotone_chain(std::span<const typename K::Point_2> points,
-                                                const K& k = K{}) {
+                                                const K& k = K{},
+                                                const Hull_options& options = {}) {
   if constexpr (internal::Exact_on_doubles<K>)  // the same exact signs, on doubles
     if (auto r = internal::hull_on_exact_doubles<K>(
-            points, [](auto doubles, const auto& kernel) { return monotone_chain(doubles, kernel); }))
+            points, [&](auto doubles, const auto& kernel) { return monotone_chain(doubles, kernel, options); }))
       return std::move(*r);
-  return internal::sorted_hull(points, k, "monotone_chain", [&](const auto& sorted, auto& chain, auto& r) {
+  return internal::sorted_hull(points, k, options, "monotone_chain", [&](const auto& sorted, auto& chain, auto& r) {
     const std::size_t m = sorted.size();
     internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m), k, chain, 0, r);  // lower, L..R
     const std::size_t lower_size = chain.size();
@@ -44,8 +47,9 @@ Hull_result<typename K::Point_2> monotone_chain(std::span<const typename K::Poin
 /// Overload for any contiguous range of K::Point_2 (std::vector, std::array...).
 template <OrientationKernel_2 K, class Range>
   requires std::convertible_to<Range&, std::span<const typename K::Point_2>>
-Hull_result<typename K::Point_2> monotone_chain(const Range& points, const K& k = K{}) {
-  return monotone_chain<K>(std::span<const typename K::Point_2>(points), k);
+Hull_result<typename K::Point_2> monotone_chain(const Range& points, const K& k = K{},
+                                                const Hull_options& options = {}) {
+  return monotone_chain<K>(std::span<const typename K::Point_2>(points), k, options);
 }
 
 }  // namespace relgeo

@@ -723,16 +723,7 @@ class Loop_limit_surface {
       points_.push_back(Point_3<FT>{A::x(control.vertices[v]), A::y(control.vertices[v]), A::z(control.vertices[v])});
     }
     topology_ = Mesh_topology::build(control);
-    // Two faces sharing two edges (around a vertex of valence 2, or a
-    // "pillow" of two faces on the same three vertices) refine into a
-    // non-manifold mesh: refused.
-    for (Index f = 0; f < topology_.number_of_faces(); ++f)
-      for (int i = 0; i < 3; ++i) {
-        const Index a = topology_.opposite(3 * f + i), b = topology_.opposite(3 * f + (i + 1) % 3);
-        if (a != invalid_index && b != invalid_index && a / 3 == b / 3)
-          throw Invalid_input("Loop limit surface: faces " + std::to_string(f) + " and " + std::to_string(a / 3) +
-                              " share two edges (a vertex of valence 2): the refinement is not a manifold");
-      }
+    require_no_faces_sharing_two_edges(topology_, "Loop limit surface");
     features_ = classify_loop_features(topology_, control.tags);
     rules_ = internal::loop_rule_data(topology_, features_);
     Index max_valence = 6;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -43,6 +44,19 @@ struct Loop_features {
     return vertex_kind[v] == Vertex_kind::crease || vertex_kind[v] == Vertex_kind::corner;
   }
 };
+
+/// Two faces sharing two edges (a two-face "pillow" on three vertices, whose
+/// vertices have valence 2) refine into a non-manifold mesh: Loop refinement
+/// and evaluation refuse them. \throws Invalid_input naming the faces.
+inline void require_no_faces_sharing_two_edges(const Mesh_topology& t, const char* who) {
+  for (Index f = 0; f < t.number_of_faces(); ++f)
+    for (Index i = 0; i < 3; ++i) {
+      const Index a = t.opposite(3 * f + i), b = t.opposite(3 * f + (i + 1) % 3);
+      if (a != invalid_index && b != invalid_index && a / 3 == b / 3)
+        throw Invalid_input(std::string(who) + ": faces " + std::to_string(f) + " and " + std::to_string(a / 3) +
+                            " share two edges (a vertex of valence 2): the refinement is not a manifold");
+    }
+}
 
 /// Classifies edges and vertices. \throws Invalid_mesh (invalid_tag) when a
 /// crease tag is not an edge of the mesh or a corner tag is out of range.

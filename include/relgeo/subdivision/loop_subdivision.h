@@ -55,8 +55,9 @@ struct Default_loop_kernel<Point_3<Mpfr_number<B>>> {
 ///
 /// Every step requires a mesh that is edge- and vertex-manifold, consistently
 /// oriented, with no repeated vertex in a face, valid tags and finite
-/// coordinates; it throws Invalid_mesh (listing the issues) or
-/// Non_finite_input otherwise. Open meshes are fine (boundary = crease rules);
+/// coordinates, and no two faces sharing two edges (a two-face pillow, whose
+/// refinement is not a manifold); it throws Invalid_mesh (listing the issues),
+/// Invalid_input (the pillow) or Non_finite_input otherwise. Open meshes are fine (boundary = crease rules);
 /// isolated vertices are kept fixed; geometrically degenerate (collinear)
 /// faces are refined like any other.
 ///
@@ -137,9 +138,11 @@ class Loop_subdivider {
     Loop_features features;
   };
   /// Builds (and so validates) the adjacency and features of a mesh.
-  /// \throws Invalid_mesh as Mesh_topology::build and classify_loop_features.
+  /// \throws Invalid_mesh as Mesh_topology::build and classify_loop_features;
+  /// Invalid_input for two faces sharing two edges.
   static Level analyse(const Mesh& m) {
     Level lv{Mesh_topology::build(m), {}};
+    require_no_faces_sharing_two_edges(lv.topology, "Loop subdivision");
     lv.features = classify_loop_features(lv.topology, m.tags);
     return lv;
   }

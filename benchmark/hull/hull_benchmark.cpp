@@ -5,7 +5,8 @@
 //
 // Benchmarks are named `hull/<family>/<N>/<algorithm>/<kernel>`:
 //   family     uniform | circle | line (hull_benchmark.h), N = 10^5, 10^6, 10^7
-//   algorithm  graham_fortune | monotone_chain | graham_incremental |
+//   algorithm  graham_fortune | graham_fortune_allpoints (no interior
+//              prefilter) | monotone_chain | graham_incremental |
 //              CGAL::ch_graham_andrew | CGAL::convex_hull_2
 //   kernel     a relgeo kernel's name() ("double" = Naive_kernel<double>,
 //              "failsafe<double>", "filtered", "exact") or Epick | Epeck
@@ -27,10 +28,12 @@
 //      graham_fortune/failsafe<double>  <= 1.25 x ch_graham_andrew/Epick  (uniform 10^6)
 //      graham_fortune/filtered          <= 1.1  x ch_graham_andrew/Epick  (uniform 10^6)
 //      graham_fortune/exact             <= 1.0  x ch_graham_andrew/Epeck  (uniform 10^5, 10^6)
+//    each also for graham_fortune_allpoints;
 //  * a peak-memory table: before the benchmarks run, each listed subject
 //    computes the hull of the largest uniform input in a forked child process;
 //    extra = peak resident memory during the hull (VmHWM, reset with
-//    /proc/self/clear_refs once the input is built) - resident memory before
+//    /proc/self/clear_refs once the input is built, after a warm-up hull of
+//    4096 points has loaded the code) - resident memory before
 //    it; bar: input + extra <= 2 x input, the input being the points in the
 //    subject's point type.
 // It is a report: the exit status is 0 whatever the ratios (1 only for a
@@ -113,11 +116,16 @@ Input make_input(const std::string& family, std::size_t n, std::uint64_t seed) {
 
 namespace {
 
-enum class Algorithm { graham_fortune, monotone_chain, graham_incremental };
+// graham_fortune_allpoints: graham_fortune with Hull_options::discard_interior
+// = false, the scan over every point as the thesis states it (the default
+// drops certainly interior points first, which CGAL's ch_graham_andrew does
+// not; CGAL's convex_hull_2 does, with its own Akl-Toussaint step).
+enum class Algorithm { graham_fortune, graham_fortune_allpoints, monotone_chain, graham_incremental };
 
 const char* algorithm_name(Algorithm a) {
   switch (a) {
     case Algorithm::graham_fortune: return "graham_fortune";
+    case Algorithm::graham_fortune_allpoints: return "graham_fortune_allpoints";
     case Algorithm::monotone_chain: return "monotone_chain";
     case Algorithm::graham_incremental: return "graham_incremental";
   }
@@ -140,6 +148,8 @@ Subject relgeo_subject(Algorithm algorithm, std::function<bool(const std::string
     const std::span<const P> s(pts);
     switch (algorithm) {
       case Algorithm::graham_fortune: return relgeo::graham_fortune<K>(s);
+      case Algorithm::graham_fortune_allpoints:
+        return relgeo::graham_fortune<K>(s, K{}, relgeo::Hull_options{.discard_interior = false});
       case Algorithm::monotone_chain: return relgeo::monotone_chain<K>(s);
       default: return relgeo::graham_incremental<K>(s);
     }
@@ -183,7 +193,7 @@ std::vector<Subject> relgeo_subjects() {
     return family == "uniform" && n <= kIncrementalMaxN;
   };
   std::vector<Subject> s;
-  for (Algorithm a : {Algorithm::graham_fortune, Algorithm::monotone_chain}) {
+  for (Algorithm a : {Algorithm::graham_fortune, Algorithm::graham_fortune_allpoints, Algorithm::monotone_chain}) {
     s.push_back(relgeo_subject<Naive_kernel<double>>(a, everywhere));
     s.push_back(relgeo_subject<Failsafe_kernel<double>>(a, everywhere));
     s.push_back(relgeo_subject<Filtered_exact_kernel>(a, everywhere));
@@ -260,6 +270,11 @@ const std::vector<Bar>& bars() {
       {"uniform", 1000000, "graham_fortune/filtered", kReference, 1.1},
       {"uniform", 100000, "graham_fortune/exact", "CGAL::ch_graham_andrew/Epeck", 1.0},
       {"uniform", 1000000, "graham_fortune/exact", "CGAL::ch_graham_andrew/Epeck", 1.0},
+      // The same bars for the scan over every point (no prefilter).
+      {"uniform", 1000000, "graham_fortune_allpoints/failsafe<double>", kReference, 1.25},
+      {"uniform", 1000000, "graham_fortune_allpoints/filtered", kReference, 1.1},
+      {"uniform", 100000, "graham_fortune_allpoints/exact", "CGAL::ch_graham_andrew/Epeck", 1.0},
+      {"uniform", 1000000, "graham_fortune_allpoints/exact", "CGAL::ch_graham_andrew/Epeck", 1.0},
   };
   return b;
 }
@@ -423,6 +438,10 @@ Memory_figure measure_memory(const Subject& s, std::size_t n) {
   if (pid == 0) {
     close(fds[0]);
     Memory_figure c;
+    {  // warm-up on a small input: code pages loaded on first use are not the hull's memory
+      std::size_t small_bytes = 0;
+      (void)s.memory_probe(std::min<std::size_t>(n, 4096), &small_bytes)();
+    }
     auto run = s.memory_probe(n, &c.input_bytes);
     {
       std::ofstream clear("/proc/self/clear_refs");
@@ -451,7 +470,8 @@ std::vector<const Subject*> memory_subjects(const std::vector<Subject>& subjects
   for (const Subject& s : subjects) {
     const std::string id = s.algorithm + "/" + s.kernel;
     if (id == "graham_fortune/double" || id == "graham_fortune/failsafe<double>" ||
-        id == "graham_fortune/filtered" || id == "monotone_chain/failsafe<double>" ||
+        id == "graham_fortune/filtered" || id == "graham_fortune_allpoints/failsafe<double>" ||
+        id == "monotone_chain/failsafe<double>" ||
         id == "CGAL::ch_graham_andrew/Epick" || id == "CGAL::convex_hull_2/Epick")
       probe.push_back(&s);
   }
@@ -463,7 +483,7 @@ void print_memory(std::ostream& out, const std::vector<const Subject*>& subjects
   out << "\npeak memory: one hull of " << n
       << " uniform points, each subject in a child process forked before the benchmarks ran;\n"
          "  input = the points in the subject's point type; extra = VmHWM during the hull - VmRSS "
-         "before it (the peak is reset with\n  /proc/self/clear_refs once the input is built); "
+         "before it (the peak is reset with\n  /proc/self/clear_refs once the input is built, after a 4096-point warm-up hull); "
          "peak = input + extra. Bar: peak <= 2 x input (i.e. extra <= input).\n\n";
   out << std::left << std::setw(42) << "subject" << std::right << std::setw(11) << "input MB"
       << std::setw(11) << "extra MB" << std::setw(11) << "peak MB" << std::setw(13) << "extra/input"

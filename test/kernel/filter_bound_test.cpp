@@ -75,17 +75,26 @@ TEST(FilterBound, FailsafeDecidesEveryRandomCase) {
 }
 
 TEST(FilterBound, FilteredKernelUsesEveryStage) {
-  // Uniform input is decided by the first stage; exactly collinear input with
-  // representable differences by the interval stage; ulp-perturbed collinear
-  // input needs the exact stage.
+  // Uniform input is decided by the first stage; near-degenerate input in
+  // moderate range by the expansion; beyond it, intervals decide what they
+  // can and GMP the rest.
   using K = Filtered_exact_kernel;
   EXPECT_EQ(K::orientation_2_with_stage({0, 0}, {1, 0.1}, {0.3, 1}).second, Filter_stage::semi_static);
   const auto exact_zero = K::orientation_2_with_stage({0.5, 0.5}, {12, 12}, {24, 24});
   EXPECT_EQ(exact_zero.first, Certified_sign::zero);
-  EXPECT_EQ(exact_zero.second, Filter_stage::interval);
+  EXPECT_EQ(exact_zero.second, Filter_stage::expansion);
   const auto tiny = K::orientation_2_with_stage({0.5 + 0x1p-53, 0.5}, {12, 12}, {24, 24});
-  EXPECT_EQ(tiny.second, Filter_stage::exact);
+  EXPECT_EQ(tiny.second, Filter_stage::expansion);
   EXPECT_EQ(tiny.first, Certified_sign::negative);  // p moved right of the diagonal: pqr clockwise
+  const double big = 0x1p600;  // beyond the expansion's range
+  const auto huge = K::orientation_2_with_stage({big * (0.5 + 0x1p-53), big * 0.5}, {big * 12, big * 12}, {big * 24, big * 24});
+  EXPECT_EQ(huge.second, Filter_stage::exact);
+  EXPECT_EQ(huge.first, Certified_sign::negative);
+  const double small = 0x1p-420;  // below the expansion's range; no interval overflows
+  const auto small_zero =
+      K::orientation_2_with_stage({small * 0.5, small * 0.5}, {small * 12, small * 12}, {small * 24, small * 24});
+  EXPECT_EQ(small_zero.second, Filter_stage::interval);  // exact differences and products: a zero interval
+  EXPECT_EQ(small_zero.first, Certified_sign::zero);
 }
 
 }  // namespace

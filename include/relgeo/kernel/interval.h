@@ -24,6 +24,7 @@
 #include <limits>
 
 #include "relgeo/kernel/certified_sign.h"
+#include "relgeo/kernel/internal/error_free.h"
 
 namespace relgeo {
 
@@ -130,30 +131,7 @@ class Interval {
     const double lo = down(p), hi = up(p);
     return {e >= 0 ? p : lo, e <= 0 ? p : hi};
   }
-  // The exact error x*y - p of the rounded product p, without calling
-  // std::fma (a libm call unless the target has FMA, e.g. -march=haswell).
-#if defined(__FMA__) || defined(__FP_FAST_FMA)
-  static double product_error(double x, double y, double p) { return __builtin_fma(x, y, -p); }
-#else
-  // Dekker's TwoProduct with Veltkamp's splitting; exact while no split
-  // overflows (|x|, |y| < 2^995) and the product does not underflow (the
-  // caller checked |p| >= 2^-960). Outside, fall back to fma.
-  static void split(double a, double& hi, double& lo) {
-    const double c = 134217729.0 * a;  // 2^27 + 1
-    hi = c - (c - a);
-    lo = a - hi;
-  }
-  static double product_error(double x, double y, double p) {
-    if (std::abs(x) >= 0x1p995 || std::abs(y) >= 0x1p995) [[unlikely]] return std::fma(x, y, -p);
-    double xh, xl, yh, yl;
-    split(x, xh, xl);
-    split(y, yh, yl);
-    const double e1 = p - xh * yh;  // Shewchuk's Two_Product_Tail: each step exact
-    const double e2 = e1 - xl * yh;
-    const double e3 = e2 - xh * yl;
-    return xl * yl - e3;
-  }
-#endif
+  static double product_error(double x, double y, double p) { return internal::two_product_error(x, y, p); }
 
   double lo_ = 0, hi_ = 0;
 };

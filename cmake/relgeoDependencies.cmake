@@ -1,5 +1,6 @@
 # GMP (with its C++ interface gmpxx) and MPFR, found through pkg-config as the
-# imported targets PkgConfig::RELGEO_GMP and PkgConfig::RELGEO_MPFR.
+# imported targets PkgConfig::RELGEO_GMP and PkgConfig::RELGEO_MPFR, and
+# Boost's headers (Boost::headers: Boost.Sort's pdqsort in relgeo/hull).
 # Included by relgeo's own CMakeLists.txt and by the installed relgeoConfig.cmake,
 # so a client finds the same libraries relgeo's targets name.
 find_package(PkgConfig REQUIRED)
@@ -8,4 +9,7 @@ if(NOT TARGET PkgConfig::RELGEO_GMP)
 endif()
 if(NOT TARGET PkgConfig::RELGEO_MPFR)
   pkg_check_modules(RELGEO_MPFR REQUIRED IMPORTED_TARGET mpfr)
+endif()
+if(NOT TARGET Boost::headers)
+  find_package(Boost 1.70 REQUIRED CONFIG)
 endif()

@@ -161,6 +161,17 @@ TEST(HullExactKernel, RationalAndDoublePathsAgree) {
   }
 }
 
+// Chains computed with wrong naive answers can name a sorted position twice;
+// each occurrence must get the point's smallest input index (a regression:
+// naive float monotone_chain on a large-range input reported index -1).
+TEST(HullSortedInput, RepeatedPositionsShareTheSmallestIndex) {
+  const std::vector<P2> input{{3, 3}, {1, 1}, {2, 2}, {1, 1}, {0, 5}};
+  const internal::Sorted_input<Filtered_exact_kernel> sorted(input, Filtered_exact_kernel{}, nullptr);
+  ASSERT_EQ(sorted.size(), 4u);  // (0,5) (1,1) (2,2) (3,3)
+  const std::vector<std::size_t> positions{1, 3, 1, 0, 3};
+  EXPECT_EQ(sorted.indices(positions), (std::vector<std::size_t>{1, 0, 1, 4, 0}));
+}
+
 TEST(HullIncremental, NeverHangsOrCrashesOnAdversarialInput) {
   // Naive double on thousands of near-degenerate sets: every run returns, and
   // its indices are valid input indices; failures are reported, not hidden.

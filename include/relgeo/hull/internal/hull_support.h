@@ -74,12 +74,13 @@ class Position_lookup {
     slots_.assign(size, Slot{empty, empty});
     for (std::size_t j = 0; j < positions.size(); ++j) {
       std::size_t s = hash(sorted[positions[j]]) & mask_;
-      while (slots_[s].position != empty) s = (s + 1) & mask_;  // positions are distinct
-      slots_[s] = Slot{static_cast<Index>(positions[j]), static_cast<Index>(j)};
+      while (slots_[s].position != empty && slots_[s].position != positions[j]) s = (s + 1) & mask_;
+      if (slots_[s].position == empty)  // a repeated position keeps its first j
+        slots_[s] = Slot{static_cast<Index>(positions[j]), static_cast<Index>(j)};
     }
   }
-  /// The j with sorted[positions[j]] == p (== on coordinates, so -0.0 finds
-  /// 0.0), or none.
+  /// The first j with sorted[positions[j]] == p (== on coordinates, so -0.0
+  /// finds 0.0), or none.
   std::size_t find(const Point& p) const {
     for (std::size_t s = hash(p) & mask_;; s = (s + 1) & mask_) {
       const Slot slot = slots_[s];
@@ -294,7 +295,7 @@ class Sorted_input {
     std::vector<std::size_t> out(positions.size());
     if constexpr (direct) {
       // One pass over the input in index order: the first hit of a point is
-      // its smallest index. Positions are distinct (a hull repeats no vertex).
+      // its smallest index.
       if (sorted_.size() < (std::size_t{1} << 32) - 1) recover<std::uint32_t>(positions, out);
       else recover<std::size_t>(positions, out);
     } else {
@@ -321,6 +322,10 @@ class Sorted_input {
       const std::size_t j = lookup.find(input_[i]);
       if (j != Lookup::none && out[j] == Lookup::none) out[j] = i, ++found;
     }
+    // A chain computed with wrong (naive) answers can repeat a position:
+    // the repeats take the index found for its first occurrence.
+    for (std::size_t j = 0; j < out.size(); ++j)
+      if (out[j] == Lookup::none) out[j] = out[lookup.find(sorted_[positions[j]])];
   }
 
   std::span<const Point> input_;

@@ -16,6 +16,7 @@
 // Defaults, unless given: --benchmark_min_time=0.2 --benchmark_repetitions=1.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
+
 #include <unistd.h>
 
 #include <cstdio>
@@ -25,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "common/command_line.h"
 #include "relgeo/curves.h"
 #include "relgeo/hull/cgal_convex_hull.h"
 #include "relgeo/kernel.h"
@@ -103,11 +105,6 @@ void print_table() {
     }
 }
 
-bool has_flag(int argc, char** argv, const char* flag) {
-  for (int i = 1; i < argc; ++i)
-    if (std::strncmp(argv[i], flag, std::strlen(flag)) == 0) return true;
-  return false;
-}
 
 template <class K, class A>
 void add(const std::string& name, std::vector<long> sizes, bool prune = true) {
@@ -120,14 +117,10 @@ void add(const std::string& name, std::vector<long> sizes, bool prune = true) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<char*> args(argv, argv + argc);
-  std::string min_time = "--benchmark_min_time=0.2", reps = "--benchmark_repetitions=1";
-  if (!has_flag(argc, argv, "--benchmark_min_time")) args.insert(args.begin() + 1, min_time.data());
-  if (!has_flag(argc, argv, "--benchmark_repetitions")) args.insert(args.begin() + 1, reps.data());
-  int n = static_cast<int>(args.size());
-  args.push_back(nullptr);
-  benchmark::Initialize(&n, args.data());
-  if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 1;
+  relgeo_bench::Command_line args(argc, argv);
+  args.set_default("--benchmark_min_time", "0.2");
+  args.set_default("--benchmark_repetitions", "1");
+  if (!args.initialize()) return 1;
   const std::vector<long> all = {100, 1000, 10000, 100000};
   add<Failsafe_kernel<double>, Graham_fortune_hull>("failsafe<double>/graham-fortune", all);
   add<Filtered_exact_kernel, Monotone_chain_hull>("filtered/monotone-chain", all);

@@ -67,6 +67,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/command_line.h"
 #include "hull_benchmark.h"
 #include "relgeo/error/hull_backward_error.h"
 #include "relgeo/hull.h"
@@ -279,22 +280,6 @@ const std::vector<Bar>& bars() {
   return b;
 }
 
-double to_ms(double t, benchmark::TimeUnit unit) {
-  switch (unit) {
-    case benchmark::kNanosecond: return t * 1e-6;
-    case benchmark::kMicrosecond: return t * 1e-3;
-    case benchmark::kMillisecond: return t;
-    case benchmark::kSecond: return t * 1e3;
-  }
-  return t;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
 /// Forwards to the display reporter and keeps every run's times and counters.
 class Ratio_reporter : public benchmark::BenchmarkReporter {
  public:
@@ -306,8 +291,8 @@ class Ratio_reporter : public benchmark::BenchmarkReporter {
     for (const Run& r : runs) {
       if (r.run_type != Run::RT_Iteration || r.error_occurred || r.iterations <= 0) continue;
       Entry& e = entries_[r.run_name.function_name];
-      e.real_ms.push_back(to_ms(r.GetAdjustedRealTime(), r.time_unit));
-      e.cpu_ms.push_back(to_ms(r.GetAdjustedCPUTime(), r.time_unit));
+      e.real_ms.push_back(1e3 * relgeo_bench::to_seconds(r.GetAdjustedRealTime(), r.time_unit));
+      e.cpu_ms.push_back(1e3 * relgeo_bench::to_seconds(r.GetAdjustedCPUTime(), r.time_unit));
       if (auto c = r.counters.find("hull"); c != r.counters.end()) e.hull = c->second.value;
       if (auto c = r.counters.find("backward_error"); c != r.counters.end()) e.backward = c->second.value;
     }
@@ -355,7 +340,7 @@ void Ratio_reporter::print(std::ostream& out, const std::vector<std::string>& or
     const std::string group = name.substr(0, slash), subject = name.substr(slash + 1);
     auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) { return x.first == group; });
     if (g == groups.end()) g = groups.insert(groups.end(), {group, {}});
-    g->second.push_back({subject, median(it->second.real_ms), median(it->second.cpu_ms),
+    g->second.push_back({subject, relgeo_bench::median(it->second.real_ms), relgeo_bench::median(it->second.cpu_ms),
                          it->second.hull, it->second.backward});
   }
   if (groups.empty()) return;
@@ -510,27 +495,6 @@ void print_memory(std::ostream& out, const std::vector<const Subject*>& subjects
 
 // ---- command line ---------------------------------------------------------------------
 
-bool has_flag(const std::vector<char*>& args, const char* flag) {
-  const std::size_t n = std::strlen(flag);
-  return std::any_of(args.begin(), args.end(), [&](const char* a) {
-    return std::strncmp(a, flag, n) == 0 && (a[n] == '=' || a[n] == '\0');
-  });
-}
-std::string flag_value(const std::vector<char*>& args, const char* flag) {
-  const std::size_t n = std::strlen(flag);
-  std::string v;
-  for (const char* a : args)
-    if (std::strncmp(a, flag, n) == 0 && a[n] == '=') v = a + n + 1;
-  return v;
-}
-void erase_flag(std::vector<char*>& args, const char* flag) {
-  const std::size_t n = std::strlen(flag);
-  args.erase(std::remove_if(args.begin() + 1, args.end(),
-                            [&](const char* a) {
-                              return std::strncmp(a, flag, n) == 0 && (a[n] == '=' || a[n] == '\0');
-                            }),
-             args.end());
-}
 bool parse_size(const std::string& s, std::size_t& out) {
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);  // accepts 1e6
@@ -544,15 +508,15 @@ bool parse_size(const std::string& s, std::size_t& out) {
 
 int main(int argc, char** argv) {
   using namespace relgeo_hull_bench;
-  std::vector<char*> args(argv, argv + argc);
+  relgeo_bench::Command_line args(argc, argv);
 
   // Own flags.
   std::vector<std::size_t> sizes = {100000, 1000000, 10000000};
   std::size_t backward_max_n = static_cast<std::size_t>(-1);
   bool memory = true;
-  if (has_flag(args, "--relgeo_sizes")) {
+  if (args.has("--relgeo_sizes")) {
     sizes.clear();
-    std::stringstream list(flag_value(args, "--relgeo_sizes"));
+    std::stringstream list(args.value("--relgeo_sizes"));
     std::string item;
     while (std::getline(list, item, ',')) {
       std::size_t n = 0;
@@ -566,34 +530,28 @@ int main(int argc, char** argv) {
       std::cerr << "relgeo_hull_benchmark: --relgeo_sizes is empty\n";
       return 1;
     }
-    erase_flag(args, "--relgeo_sizes");
+    args.erase("--relgeo_sizes");
   }
-  if (has_flag(args, "--relgeo_backward_error_max_n")) {
-    if (!parse_size(flag_value(args, "--relgeo_backward_error_max_n"), backward_max_n)) {
+  if (args.has("--relgeo_backward_error_max_n")) {
+    if (!parse_size(args.value("--relgeo_backward_error_max_n"), backward_max_n)) {
       std::cerr << "relgeo_hull_benchmark: --relgeo_backward_error_max_n needs a size\n";
       return 1;
     }
-    erase_flag(args, "--relgeo_backward_error_max_n");
+    args.erase("--relgeo_backward_error_max_n");
   }
-  if (has_flag(args, "--relgeo_memory")) {
-    const std::string v = flag_value(args, "--relgeo_memory");
+  if (args.has("--relgeo_memory")) {
+    const std::string v = args.value("--relgeo_memory");
     if (v != "true" && v != "false") {
       std::cerr << "relgeo_hull_benchmark: --relgeo_memory=true|false\n";
       return 1;
     }
     memory = v == "true";
-    erase_flag(args, "--relgeo_memory");
+    args.erase("--relgeo_memory");
   }
-  std::vector<std::string> defaults;
-  if (!has_flag(args, "--benchmark_min_time")) defaults.push_back("--benchmark_min_time=0.3");
-  if (!has_flag(args, "--benchmark_repetitions")) defaults.push_back("--benchmark_repetitions=1");
-  for (std::string& d : defaults) args.insert(args.begin() + 1, d.data());
-  const std::string format = flag_value(args, "--benchmark_format");
-
-  int n_args = static_cast<int>(args.size());
-  args.push_back(nullptr);
-  benchmark::Initialize(&n_args, args.data());
-  if (benchmark::ReportUnrecognizedArguments(n_args, args.data())) return 1;
+  args.set_default("--benchmark_repetitions", "1");
+  args.set_default("--benchmark_min_time", "0.3");
+  const std::string format = args.value("--benchmark_format");
+  if (!args.initialize()) return 1;
 
   std::vector<Subject> subjects = relgeo_subjects();
   for (Subject& s : cgal_subjects()) subjects.push_back(std::move(s));
@@ -626,10 +584,7 @@ int main(int argc, char** argv) {
             ->UseRealTime();
       }
 
-  std::unique_ptr<benchmark::BenchmarkReporter> display;
-  if (format == "json") display = std::make_unique<benchmark::JSONReporter>();
-  else display = std::make_unique<benchmark::ConsoleReporter>(benchmark::ConsoleReporter::OO_Tabular);
-  Ratio_reporter reporter(std::move(display));
+  Ratio_reporter reporter(relgeo_bench::make_display_reporter(format, "relgeo_hull_benchmark"));
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   for (const Subject& s : subjects) s.release();
   std::ostream& table = format == "json" ? std::cerr : std::cout;

@@ -40,6 +40,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/command_line.h"
 #include "predicate_benchmark.h"
 #include "relgeo/kernel.h"
 
@@ -80,22 +81,6 @@ const std::vector<Bar>& bars() {
   return b;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
-double to_ns(double t, benchmark::TimeUnit unit) {
-  switch (unit) {
-    case benchmark::kNanosecond: return t;
-    case benchmark::kMicrosecond: return t * 1e3;
-    case benchmark::kMillisecond: return t * 1e6;
-    case benchmark::kSecond: return t * 1e9;
-  }
-  return t;
-}
-
 /// Display reporter that forwards everything to the reporter it wraps and
 /// keeps the real and CPU time per call of every run, for the ratio table.
 class Ratio_reporter : public benchmark::BenchmarkReporter {
@@ -127,8 +112,8 @@ class Ratio_reporter : public benchmark::BenchmarkReporter {
       if (it == entries_.end()) it = entries_.insert(entries_.end(), Entry{name, {}, {}, 0});
       if (const auto c = r.counters.find("uncertain"); c != r.counters.end())
         it->uncertain = c->second.value;
-      it->real_ns.push_back(to_ns(r.GetAdjustedRealTime(), r.time_unit) / calls_);
-      it->cpu_ns.push_back(to_ns(r.GetAdjustedCPUTime(), r.time_unit) / calls_);
+      it->real_ns.push_back(1e9 * to_seconds(r.GetAdjustedRealTime(), r.time_unit) / calls_);
+      it->cpu_ns.push_back(1e9 * to_seconds(r.GetAdjustedCPUTime(), r.time_unit) / calls_);
     }
   }
   void Finalize() override { inner_->Finalize(); }
@@ -247,30 +232,6 @@ void Ratio_reporter::print_ratios(std::ostream& out) const {
 
 /// The display reporter --benchmark_format asks for (console or json), with
 /// colour only on a terminal.
-std::unique_ptr<benchmark::BenchmarkReporter> make_display_reporter(const std::string& format) {
-  if (format == "json") return std::make_unique<benchmark::JSONReporter>();
-  if (format == "csv")  // deprecated by Google Benchmark: not offered here
-    std::cerr << "relgeo_predicate_benchmark: --benchmark_format=csv unsupported, using console\n";
-  const bool color = isatty(STDOUT_FILENO) && std::getenv("TERM") &&
-                     std::strcmp(std::getenv("TERM"), "dumb") != 0;
-  return std::make_unique<benchmark::ConsoleReporter>(
-      color ? benchmark::ConsoleReporter::OO_ColorTabular : benchmark::ConsoleReporter::OO_Tabular);
-}
-
-bool has_flag(const std::vector<char*>& args, const char* flag) {
-  const std::size_t n = std::strlen(flag);
-  return std::any_of(args.begin(), args.end(), [&](const char* a) {
-    return std::strncmp(a, flag, n) == 0 && (a[n] == '=' || a[n] == '\0');
-  });
-}
-std::string flag_value(const std::vector<char*>& args, const char* flag) {
-  const std::size_t n = std::strlen(flag);
-  std::string v;
-  for (const char* a : args)
-    if (std::strncmp(a, flag, n) == 0 && a[n] == '=') v = a + n + 1;
-  return v;
-}
-
 }  // namespace
 }  // namespace relgeo_bench
 
@@ -281,19 +242,16 @@ int main(int argc, char** argv) {
   // Defaults, each unless given: 3 repetitions of 0.2 s, randomly interleaved
   // (so a burst of load from another process hits a repetition, not a whole
   // benchmark), median used. About a minute in all.
-  std::vector<char*> args(argv, argv + argc);
-  std::vector<std::string> defaults;
-  const bool default_repetitions = !has_flag(args, "--benchmark_repetitions");
-  if (!has_flag(args, "--benchmark_min_time")) defaults.push_back("--benchmark_min_time=0.2");
-  if (default_repetitions) defaults.push_back("--benchmark_repetitions=3");
-  if (!has_flag(args, "--benchmark_enable_random_interleaving"))
-    defaults.push_back("--benchmark_enable_random_interleaving=true");
-  for (std::string& d : defaults) args.insert(args.begin() + 1, d.data());
-  const std::string format = flag_value(args, "--benchmark_format");
+  Command_line args(argc, argv);
+  const bool default_repetitions = !args.has("--benchmark_repetitions");
+  args.set_default("--benchmark_min_time", "0.2");
+  args.set_default("--benchmark_repetitions", "3");
+  args.set_default("--benchmark_enable_random_interleaving", "true");
+  const std::string format = args.value("--benchmark_format");
   // Our own flag, consumed before Google Benchmark sees the arguments.
   std::size_t cases = kDefaultCases;
-  if (has_flag(args, "--relgeo_cases")) {
-    const std::string v = flag_value(args, "--relgeo_cases");
+  if (args.has("--relgeo_cases")) {
+    const std::string v = args.value("--relgeo_cases");
     char* end = nullptr;
     const unsigned long long c = std::strtoull(v.c_str(), &end, 10);
     if (v.empty() || *end != '\0' || c == 0) {
@@ -301,20 +259,14 @@ int main(int argc, char** argv) {
       return 1;
     }
     cases = static_cast<std::size_t>(c);
-    args.erase(std::remove_if(args.begin() + 1, args.end(),
-                              [](const char* a) { return std::strncmp(a, "--relgeo_cases", 14) == 0; }),
-               args.end());
+    args.erase("--relgeo_cases");
   }
   // Shorten the console output to the medians, unless the user asked for
   // repetitions or aggregates, or for machine-readable output.
   const bool compact = default_repetitions && format != "json" &&
-                       !has_flag(args, "--benchmark_display_aggregates_only") &&
-                       !has_flag(args, "--benchmark_report_aggregates_only");
-
-  int n = static_cast<int>(args.size());
-  args.push_back(nullptr);  // argv[argc] == nullptr, as Initialize may expect
-  benchmark::Initialize(&n, args.data());
-  if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 1;
+                       !args.has("--benchmark_display_aggregates_only") &&
+                       !args.has("--benchmark_report_aggregates_only");
+  if (!args.initialize()) return 1;
 
   // Inputs: the same seeds as relgeo::analysis::standard_workloads_2/3.
   const std::vector<Workload<Orientation_2_case>> families_2{
@@ -342,7 +294,7 @@ int main(int argc, char** argv) {
           ->Unit(benchmark::kMicrosecond);
     }
 
-  Ratio_reporter reporter(make_display_reporter(format), cases, compact);
+  Ratio_reporter reporter(make_display_reporter(format, "relgeo_predicate_benchmark"), cases, compact);
   reporter.set_order(std::move(names));
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   reporter.print_ratios(format == "json" ? std::cerr : std::cout);

@@ -16,6 +16,7 @@
 //
 // Defaults, unless given: --benchmark_min_time=0.2 --benchmark_repetitions=1.
 #include <benchmark/benchmark.h>
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -28,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "common/command_line.h"
 #include "relgeo/linear.h"
 
 namespace {
@@ -146,24 +148,14 @@ void print_ratios() {
   }
 }
 
-bool has_flag(int argc, char** argv, const char* flag) {
-  const std::size_t n = std::strlen(flag);
-  for (int i = 1; i < argc; ++i)
-    if (std::strncmp(argv[i], flag, n) == 0) return true;
-  return false;
-}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<char*> args(argv, argv + argc);
-  std::string min_time = "--benchmark_min_time=0.2", reps = "--benchmark_repetitions=1";
-  if (!has_flag(argc, argv, "--benchmark_min_time")) args.insert(args.begin() + 1, min_time.data());
-  if (!has_flag(argc, argv, "--benchmark_repetitions")) args.insert(args.begin() + 1, reps.data());
-  int n = static_cast<int>(args.size());
-  args.push_back(nullptr);
-  benchmark::Initialize(&n, args.data());
-  if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 1;
+  relgeo_bench::Command_line args(argc, argv);
+  args.set_default("--benchmark_min_time", "0.2");
+  args.set_default("--benchmark_repetitions", "1");
+  if (!args.initialize()) return 1;
   for (Linear_solver m : all_linear_solvers) {
     auto* b = benchmark::RegisterBenchmark(("solve/" + std::string(to_string(m))).c_str(),
                                            [m](benchmark::State& s) { bench_solve(s, m); });

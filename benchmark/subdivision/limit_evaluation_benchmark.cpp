@@ -27,6 +27,7 @@
 // The exit status is 0 whatever the throughput.
 #include <benchmark/benchmark.h>
 
+#include "common/command_line.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -207,14 +208,9 @@ class Throughput_reporter : public benchmark::ConsoleReporter {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<char*> args(argv, argv + argc);
-  bool has_min_time = false;
-  for (int i = 1; i < argc; ++i) has_min_time |= std::strncmp(argv[i], "--benchmark_min_time", 20) == 0;
-  std::string min_time = "--benchmark_min_time=0.3";
-  if (!has_min_time) args.push_back(min_time.data());
-  int n = static_cast<int>(args.size());
-  benchmark::Initialize(&n, args.data());
-  if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 1;
+  relgeo_bench::Command_line args(argc, argv);
+  args.set_default("--benchmark_min_time", "0.3");
+  if (!args.initialize()) return 1;
   register_all();
   Throughput_reporter reporter;
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);

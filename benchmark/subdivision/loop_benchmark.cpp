@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "common/command_line.h"
 #include "loop_benchmark.h"
 #include "mesh/mesh_fixtures.h"
 #include "relgeo/kernel.h"
@@ -147,14 +148,9 @@ class Table_reporter : public benchmark::ConsoleReporter {
 
 int main(int argc, char** argv) {
   using namespace relgeo_bench;
-  std::vector<char*> args(argv, argv + argc);
-  bool has_min_time = false;
-  for (int i = 1; i < argc; ++i) has_min_time |= std::strncmp(argv[i], "--benchmark_min_time", 20) == 0;
-  std::string min_time = "--benchmark_min_time=0.3";
-  if (!has_min_time) args.push_back(min_time.data());
-  int n = static_cast<int>(args.size());
-  benchmark::Initialize(&n, args.data());
-  if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 1;
+  relgeo_bench::Command_line args(argc, argv);
+  args.set_default("--benchmark_min_time", "0.3");
+  if (!args.initialize()) return 1;
 
   const std::vector<Bench_mesh> ms = meshes();
   std::vector<std::string> order;

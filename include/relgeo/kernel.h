@@ -9,6 +9,7 @@
 #include "relgeo/kernel/failsafe_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/kernel/interval_kernel.h"
+#include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/kernel/mpfr_kernel.h"
 #include "relgeo/kernel/naive_kernel.h"
 #include "relgeo/kernel/point.h"

@@ -14,6 +14,15 @@ static_assert(Kernel<Naive_kernel<float>> && Kernel<Naive_kernel<double>> &&
               Kernel<Naive_kernel<long double>>);
 static_assert(Kernel<Failsafe_kernel<double>> && Kernel<Failsafe_kernel<float>>);
 static_assert(Kernel<Interval_kernel> && Kernel<Filtered_exact_kernel> && Kernel<Exact_kernel>);
+// Default kernels by coordinate type (kernel_for_number.h).
+static_assert(std::is_same_v<Kernel_for_number<double>::type, Naive_kernel<double>>);
+static_assert(std::is_same_v<Kernel_for_number<float>::type, Naive_kernel<float>>);
+static_assert(std::is_same_v<Kernel_for_number<mpq_class>::type, Exact_kernel>);
+static_assert(std::is_same_v<Kernel_for_number<Interval>::type, Interval_kernel>);
+static_assert(std::is_same_v<Kernel_for_number<Mpfr_number<80>>::type, Mpfr_kernel<80>>);
+static_assert(std::is_same_v<Predicate_kernel_for_number<double>::type, Filtered_exact_kernel>);
+static_assert(std::is_same_v<Predicate_kernel_for_number<long double>::type, Naive_kernel<long double>>);
+static_assert(std::is_same_v<Predicate_kernel_for_number<mpq_class>::type, Exact_kernel>);
 static_assert(Kernel<Mpfr_kernel<53>> && Kernel<Mpfr_kernel<300>>);
 static_assert(Kernel<Cgal_kernel<CGAL::Simple_cartesian<double>>>);
 static_assert(Kernel<Cgal_kernel<CGAL::Epick>> && Kernel<Cgal_kernel<CGAL::Epeck>>);

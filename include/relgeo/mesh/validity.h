@@ -12,11 +12,7 @@
 #include <vector>
 
 #include "relgeo/kernel/certified_sign.h"
-#include "relgeo/kernel/exact_kernel.h"
-#include "relgeo/kernel/filtered_exact_kernel.h"
-#include "relgeo/kernel/interval_kernel.h"
-#include "relgeo/kernel/mpfr_kernel.h"
-#include "relgeo/kernel/naive_kernel.h"
+#include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/mesh_topology.h"
@@ -24,34 +20,13 @@
 
 namespace relgeo {
 
-/// The kernel whose predicates check_mesh uses by default: exact predicates
-/// for double coordinates (Filtered_exact_kernel) and rationals
-/// (Exact_kernel); Interval_kernel for intervals (doubt is reported as
-/// `undecided`); the naive kernel of float/long double and Mpfr_kernel<B>
-/// (not certified: say so when you rely on it).
+/// The kernel whose predicates check_mesh uses by default for points P:
+/// Predicate_kernel_for_number of the coordinate type (exact predicates for
+/// double and rationals).
 template <class P>
 struct Default_check_kernel;
-template <>
-struct Default_check_kernel<Point_3<double>> {
-  using type = Filtered_exact_kernel;
-};
-template <class T>
-  requires std::is_floating_point_v<T> && (!std::is_same_v<T, double>)
-struct Default_check_kernel<Point_3<T>> {
-  using type = Naive_kernel<T>;
-};
-template <>
-struct Default_check_kernel<Point_3<mpq_class>> {
-  using type = Exact_kernel;
-};
-template <>
-struct Default_check_kernel<Point_3<Interval>> {
-  using type = Interval_kernel;
-};
-template <int B>
-struct Default_check_kernel<Point_3<Mpfr_number<B>>> {
-  using type = Mpfr_kernel<B>;
-};
+template <class FT>
+struct Default_check_kernel<Point_3<FT>> : Predicate_kernel_for_number<FT> {};
 
 /// What check_mesh looks at.
 struct Mesh_check_options {

@@ -11,10 +11,7 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
-#include "relgeo/kernel/exact_kernel.h"
-#include "relgeo/kernel/interval_kernel.h"
-#include "relgeo/kernel/mpfr_kernel.h"
-#include "relgeo/kernel/naive_kernel.h"
+#include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
@@ -23,31 +20,15 @@
 
 namespace relgeo {
 
-/// The kernel used when none is given, from the point type: the naive kernel
-/// of a floating-point type, Interval_kernel, Exact_kernel, Mpfr_kernel<B>.
-/// (Refinement uses only constructions, which are the same in every kernel
-/// over one number type: Naive_kernel<double>, Failsafe_kernel<double> and
-/// Filtered_exact_kernel refine identically.) CGAL points: pass
-/// Cgal_kernel<K> explicitly.
+/// The kernel used when none is given, from the point type:
+/// Kernel_for_number of the coordinate type (refinement uses only
+/// constructions, which are the same in every kernel over one number type:
+/// Naive_kernel<double>, Failsafe_kernel<double> and Filtered_exact_kernel
+/// refine identically). CGAL points: pass Cgal_kernel<K> explicitly.
 template <class P>
 struct Default_loop_kernel;
-template <class T>
-  requires std::is_floating_point_v<T>
-struct Default_loop_kernel<Point_3<T>> {
-  using type = Naive_kernel<T>;
-};
-template <>
-struct Default_loop_kernel<Point_3<Interval>> {
-  using type = Interval_kernel;
-};
-template <>
-struct Default_loop_kernel<Point_3<mpq_class>> {
-  using type = Exact_kernel;
-};
-template <int B>
-struct Default_loop_kernel<Point_3<Mpfr_number<B>>> {
-  using type = Mpfr_kernel<B>;
-};
+template <class FT>
+struct Default_loop_kernel<Point_3<FT>> : Kernel_for_number<FT> {};
 
 /// \brief Loop subdivision under kernel K: refinement, limit positions, limit
 /// meshes. Holds the options and the weight table (reuse one object for many

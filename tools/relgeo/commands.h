@@ -23,15 +23,16 @@ struct Orient_grid_options {
 };
 int run_orient_grid(const Orient_grid_options& options, std::ostream& out, std::ostream& err);
 
-struct Hull_options {
+struct Hull_command_options {
   std::string algorithm;  ///< graham-incremental | graham-fortune | monotone-chain | cgal
   std::string kernel;
   std::string input;      ///< point file, "-" for standard input
   std::string svg;        ///< picture file, empty for none
+  bool all_points = false;  ///< no interior prefilter (relgeo::Hull_options::discard_interior = false)
   Format format = Format::text;
 };
 /// `relgeo hull`: reads the points from `options.input` (or `in` for "-").
-int run_hull_command(const Hull_options& options, std::istream& in, std::ostream& out,
+int run_hull_command(const Hull_command_options& options, std::istream& in, std::ostream& out,
                      std::ostream& err);
 
 struct Experiment_options {

@@ -11,11 +11,15 @@
 
 namespace relgeo::tool {
 
-int run_hull_command(const Hull_options& o, std::istream& in, std::ostream& out, std::ostream& err) {
+int run_hull_command(const Hull_command_options& o, std::istream& in, std::ostream& out, std::ostream& err) {
   validate_hull_combination(o.algorithm, o.kernel);
   const std::vector<Point_2<double>> points = read_points_2(o.input, in);
   const Kernel_info info = kernel_info(o.kernel);
-  const Hull_evaluation e = evaluate_hull(o.algorithm, o.kernel, points);
+  const bool sorting = o.algorithm == "graham-fortune" || o.algorithm == "monotone-chain";
+  if (o.all_points && !sorting)
+    throw Usage_error("--all-points applies to graham-fortune and monotone-chain only");
+  const Hull_evaluation e =
+      evaluate_hull(o.algorithm, o.kernel, points, 0, relgeo::Hull_options{.discard_interior = !o.all_points});
   if (!o.svg.empty())
     write_hull_svg(o.svg, points, e, "relgeo hull: " + o.algorithm + ", kernel " + o.kernel);
   const bool failed = e.run.status != Hull_status::ok;
@@ -23,10 +27,12 @@ int run_hull_command(const Hull_options& o, std::istream& in, std::ostream& out,
   if (o.format == Format::json) {
     Json j = hull_report_json(o.algorithm, info, points, e);
     j["input"] = o.input;
+    if (sorting) j["discard_interior"] = !o.all_points;
     if (!o.svg.empty()) j["svg"] = o.svg;
     out << dump_json(j) << '\n';
   } else {
     std::string text = hull_report_text(o.algorithm, info, o.input == "-" ? "<stdin>" : o.input, points, e);
+    if (o.all_points) text += "prefilter        off (--all-points: every point scanned)\n";
     if (!o.svg.empty()) text += "svg              " + o.svg + "\n";
     out << text;
   }

@@ -51,9 +51,10 @@ void validate_hull_combination(std::string_view algorithm, std::string_view kern
 // ---- measures ----------------------------------------------------------------
 
 Hull_evaluation evaluate_hull(std::string_view algorithm, std::string_view kernel,
-                              std::span<const Point_2<double>> points, double min_seconds) {
+                              std::span<const Point_2<double>> points, double min_seconds,
+                              const relgeo::Hull_options& options) {
   Hull_evaluation e;
-  e.run = run_hull(algorithm, kernel, points, min_seconds);
+  e.run = run_hull(algorithm, kernel, points, min_seconds, options);
   e.error = hull_error(points, e.run.indices);
   e.backward = hull_backward_error(points, e.run.indices);
   return e;

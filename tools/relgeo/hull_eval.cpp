@@ -139,7 +139,7 @@ Hull_run run_isolated(Run run, unsigned time_limit_s) {
 }  // namespace
 
 Hull_run run_hull(std::string_view algorithm, std::string_view kernel,
-                  std::span<const Point_2<double>> input, double min_seconds) {
+                  std::span<const Point_2<double>> input, double min_seconds, const relgeo::Hull_options& options) {
   validate_hull_combination(algorithm, kernel);
   return with_kernel(kernel, [&]<class K>(const K& k) {
     using P = typename K::Point_2;
@@ -151,8 +151,8 @@ Hull_run run_hull(std::string_view algorithm, std::string_view kernel,
 
     auto compute = [&]() -> Hull_result<P> {
       if (algorithm == "graham-incremental") return graham_incremental<K>(span, k);
-      if (algorithm == "graham-fortune") return graham_fortune<K>(span, k);
-      if (algorithm == "monotone-chain") return monotone_chain<K>(span, k);
+      if (algorithm == "graham-fortune") return graham_fortune<K>(span, k, options);
+      if (algorithm == "monotone-chain") return monotone_chain<K>(span, k, options);
       if constexpr (Cgal_adapter<K>)
         return cgal_convex_hull<typename K::Cgal>(span, Cgal_hull_algorithm::convex_hull_2, k);
       // validate_hull_combination lets `cgal` through only for cgal-* kernels.

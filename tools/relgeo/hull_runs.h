@@ -49,8 +49,10 @@ struct Hull_run {
 /// `min_seconds` have passed (at least once); time_s is the fastest.
 /// \throws Usage_error for a bad name or combination; relgeo::Error from the
 ///   algorithm (Non_finite_input).                       [hull_eval.cpp]
+/// `options` go to graham-fortune and monotone-chain.
 Hull_run run_hull(std::string_view algorithm, std::string_view kernel,
-                  std::span<const Point_2<double>> points, double min_seconds = 0);
+                  std::span<const Point_2<double>> points, double min_seconds = 0,
+                  const relgeo::Hull_options& options = {});
 
 /// A run with its error measures (exact, kernel independent).
 struct Hull_evaluation {
@@ -59,7 +61,8 @@ struct Hull_evaluation {
   Hull_backward_error backward;  ///< the certificate
 };
 Hull_evaluation evaluate_hull(std::string_view algorithm, std::string_view kernel,
-                              std::span<const Point_2<double>> points, double min_seconds = 0);
+                              std::span<const Point_2<double>> points, double min_seconds = 0,
+                              const relgeo::Hull_options& options = {});
 
 /// The classroom example A1 of Kettner et al. (SPEC Sec. 3.1), in insertion order.
 std::vector<Point_2<double>> classroom_example_a1();

@@ -96,7 +96,7 @@ int run(int argc, char** argv) {
              exit_codes_text);
 
   // ---- hull ----------------------------------------------------------------
-  Hull_options hull;
+  Hull_command_options hull;
   std::string hull_format = "text";
   auto* hu = app.add_subcommand(
       "hull",
@@ -112,6 +112,9 @@ int run(int argc, char** argv) {
   hu->add_option("--input", hull.input, "the point file, '-' for standard input")
       ->required()
       ->type_name("FILE");
+  hu->add_flag("--all-points", hull.all_points,
+               "graham-fortune, monotone-chain: scan every point, without first dropping the points "
+               "certified to lie inside the polygon of 8 extreme points (same exact hull, same bound)");
   hu->add_option("--svg", hull.svg,
                  "write a picture: input points, computed and exact hull, lost points")
       ->type_name("FILE");

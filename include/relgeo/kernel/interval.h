@@ -88,13 +88,6 @@ class Interval {
   static constexpr Interval nan() {
     return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
   }
-  // Rounded sum x + y moved down (up) to a bound of the exact sum. The exact
-  // rounding error comes from Knuth's TwoSum, so an exact sum is not widened
-  // and an inexact one only on the side where the exact value lies.
-  static double sum_error(double x, double y, double s) {
-    const double yv = s - x;
-    return (x - (s - yv)) + (y - yv);
-  }
   // At least one ulp outward, inline (libm's nextafter is a call): Rump,
   // Zimmermann, Boldo, Melquiond, "Computing predecessor and successor in
   // rounding to nearest", BIT 49 (2009): for finite x,
@@ -109,17 +102,20 @@ class Interval {
     const double c = 0x1p-53 * (1 + 0x1p-52) * std::abs(x) + 0x1p-1074;
     return x - c;
   }
+  // Rounded sum x + y moved down (up) to a bound of the exact sum. The exact
+  // rounding error comes from Knuth's TwoSum, so an exact sum is not widened
+  // and an inexact one only on the side where the exact value lies.
   static double sum_down(double x, double y) {
-    const double s = x + y;
+    const auto [s, error] = internal::two_sum(x, y);
     if (!std::isfinite(s)) [[unlikely]] return std::nextafter(s, -kInf);
     const double d = down(s);
-    return sum_error(x, y, s) >= 0 ? s : d;
+    return error >= 0 ? s : d;
   }
   static double sum_up(double x, double y) {
-    const double s = x + y;
+    const auto [s, error] = internal::two_sum(x, y);
     if (!std::isfinite(s)) [[unlikely]] return std::nextafter(s, kInf);
     const double u = up(s);
-    return sum_error(x, y, s) <= 0 ? s : u;
+    return error <= 0 ? s : u;
   }
   // Product of two nonzero doubles; product_error gives the exact rounding
   // error while the product is far from underflow.

@@ -39,8 +39,9 @@ class Exact_kernel : public internal::Kernel_base<Exact_kernel, mpq_class> {
 
   /// v as a double when it is one exactly (a dyadic rational with at most 53
   /// significant bits in double's exponent range, as every value read from a
-  /// double is), nullopt otherwise. Bit counts only, no division: about 2 ns
-  /// for one-limb numerators and denominators (every double in [2^-63, 2^64)).
+  /// double is), nullopt otherwise. Bit counts only, no division; one-limb
+  /// numerators and denominators (every double in [2^-63, 2^64)) take a
+  /// shortcut without GMP calls.
   static std::optional<double> exact_double(const FT& v) {
     mpz_srcptr num = v.get_num_mpz_t(), den = v.get_den_mpz_t();
     if (mpz_sgn(num) == 0) return 0.0;

@@ -29,6 +29,8 @@
 //      graham_fortune/filtered          <= 1.1  x ch_graham_andrew/Epick  (uniform 10^6)
 //      graham_fortune/exact             <= 1.0  x ch_graham_andrew/Epeck  (uniform 10^5, 10^6)
 //    each also for graham_fortune_allpoints;
+//  * `sort/uniform/<N>/pdqsort_branchless|std::sort`: the sort of a copy of
+//    the points alone (the largest part of a hull), in the console output;
 //  * a peak-memory table: before the benchmarks run, each listed subject
 //    computes the hull of the largest uniform input in a forked child process;
 //    extra = peak resident memory during the hull (VmHWM, reset with
@@ -66,6 +68,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <boost/sort/pdqsort/pdqsort.hpp>
 
 #include "common/command_line.h"
 #include "hull_benchmark.h"
@@ -583,6 +587,30 @@ int main(int argc, char** argv) {
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
       }
+  // The largest part of a hull alone: a copy of the points sorted
+  // lexicographically, by Boost's pdqsort_branchless with a branch-free "less"
+  // as relgeo's hulls do, and by std::sort as CGAL's ch_graham_andrew does.
+  for (std::size_t n : sizes)
+    for (const bool pdq : {true, false})
+      benchmark::RegisterBenchmark(
+          ("sort/uniform/" + std::to_string(n) + (pdq ? "/pdqsort_branchless" : "/std::sort")).c_str(),
+          [&inputs, n, pdq](benchmark::State& st) {
+            using P = relgeo::Point_2<double>;
+            const std::vector<P>& points = inputs.get("uniform", n).points;
+            for (auto _ : st) {
+              std::vector<P> copy(points);
+              if (pdq)
+                boost::sort::pdqsort_branchless(copy.begin(), copy.end(), [](const P& a, const P& b) {
+                  return (a.x < b.x) | ((a.x == b.x) & (a.y < b.y));
+                });
+              else
+                std::sort(copy.begin(), copy.end(),
+                          [](const P& a, const P& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+              benchmark::DoNotOptimize(copy.data());
+            }
+          })
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
 
   Ratio_reporter reporter(relgeo_bench::make_display_reporter(format, "relgeo_hull_benchmark"));
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);

@@ -223,7 +223,8 @@ std::optional<Point_bitmap> interior_prefilter(std::span<const Point> points, co
 ///
 /// Points of doubles (finite: callers check first) are compared directly,
 /// which is exact, on a plain sorted copy of the points (Boost's branchless
-/// pattern-defeating quicksort: 1.4x faster than std::sort on random input);
+/// pattern-defeating quicksort, faster than std::sort on random input: the
+/// sort/ rows of relgeo_hull_benchmark);
 /// the input indices are recovered afterwards for the few positions asked
 /// for, by one pass over the input through a hash set of their points. The
 /// sort is most of a hull's time and the copy its memory: comparing through
@@ -311,8 +312,8 @@ class Sorted_input {
     const Lookup lookup(sorted_, positions);
     std::fill(out.begin(), out.end(), Lookup::none);
     // When the hull is large its table is too: prefetching the slot 16 points
-    // ahead and its point 8 ahead hides some cache misses (57 -> 45 ms for
-    // 10^6 points on a circle; +1 ms for 10^6 uniform points).
+    // ahead and its point 8 ahead hides some of the cache misses (a fifth of
+    // the recovery time for 10^6 points on a circle, timed on its own).
     constexpr std::size_t slot_ahead = 16, point_ahead = 8;
     const std::size_t n = input_.size();
     std::size_t found = 0;

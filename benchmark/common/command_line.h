@@ -78,6 +78,15 @@ inline std::unique_ptr<benchmark::BenchmarkReporter> make_display_reporter(const
       color ? benchmark::ConsoleReporter::OO_ColorTabular : benchmark::ConsoleReporter::OO_Tabular);
 }
 
+/// Ends a main: shuts Google Benchmark down and returns the exit status, 1
+/// (with a message on stderr) when no benchmark matched the filter.
+inline int finish(std::size_t ran, const char* program) {
+  benchmark::Shutdown();
+  if (ran > 0) return 0;
+  std::cerr << program << ": no benchmark matched the filter\n";
+  return 1;
+}
+
 inline double median(std::vector<double> v) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());

@@ -79,13 +79,7 @@ class Collecting_reporter : public benchmark::ConsoleReporter {
     for (const Run& r : runs) {
       if (r.run_type != Run::RT_Iteration || r.error_occurred || r.iterations <= 0) continue;
       const std::string name = r.run_name.function_name;  // extrusion/<kernel>/<algorithm>[/no-prune]
-      double t = r.GetAdjustedRealTime();
-      switch (r.time_unit) {
-        case benchmark::kNanosecond: t *= 1e-9; break;
-        case benchmark::kMicrosecond: t *= 1e-6; break;
-        case benchmark::kMillisecond: t *= 1e-3; break;
-        case benchmark::kSecond: break;
-      }
+      const double t = relgeo_bench::to_seconds(r.GetAdjustedRealTime(), r.time_unit);
       seconds()[name.substr(name.find('/') + 1)][std::stoul(r.run_name.args)] = t;
     }
   }
@@ -131,10 +125,5 @@ int main(int argc, char** argv) {
   Collecting_reporter reporter;
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   print_table();
-  benchmark::Shutdown();
-  if (ran == 0) {
-    std::cerr << "relgeo_extrusion_benchmark: no benchmark matched the filter\n";
-    return 1;
-  }
-  return 0;
+  return relgeo_bench::finish(ran, "relgeo_extrusion_benchmark");
 }

@@ -619,10 +619,5 @@ int main(int argc, char** argv) {
   reporter.print(table, names);
 
   if (memory) print_memory(table, memory_probe, memory_figures, memory_n);
-  benchmark::Shutdown();
-  if (ran == 0) {
-    std::cerr << "relgeo_hull_benchmark: no benchmark matched the filter\n";
-    return 1;
-  }
-  return 0;
+  return relgeo_bench::finish(ran, "relgeo_hull_benchmark");
 }

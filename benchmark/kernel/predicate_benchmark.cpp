@@ -298,11 +298,6 @@ int main(int argc, char** argv) {
   reporter.set_order(std::move(names));
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   reporter.print_ratios(format == "json" ? std::cerr : std::cout);
-  benchmark::Shutdown();
   for (const Subject& s : subjects) s.release();
-  if (ran == 0) {
-    std::cerr << "relgeo_predicate_benchmark: no benchmark matched the filter\n";
-    return 1;
-  }
-  return 0;
+  return finish(ran, "relgeo_predicate_benchmark");
 }

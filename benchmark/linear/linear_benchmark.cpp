@@ -106,13 +106,7 @@ class Collecting_reporter : public benchmark::ConsoleReporter {
       const auto a = name.find('/'), b = name.find('/', a + 1);
       const std::string method = name.substr(a + 1, b - a - 1);
       const int n = std::stoi(name.substr(b + 1));
-      double t = r.GetAdjustedRealTime();
-      switch (r.time_unit) {
-        case benchmark::kNanosecond: break;
-        case benchmark::kMicrosecond: t *= 1e3; break;
-        case benchmark::kMillisecond: t *= 1e6; break;
-        case benchmark::kSecond: t *= 1e9; break;
-      }
+      const double t = 1e9 * relgeo_bench::to_seconds(r.GetAdjustedRealTime(), r.time_unit);
       results()[{n, method}].ns = t;
     }
   }
@@ -165,10 +159,5 @@ int main(int argc, char** argv) {
   Collecting_reporter reporter;
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   print_ratios();
-  benchmark::Shutdown();
-  if (ran == 0) {
-    std::cerr << "relgeo_linear_benchmark: no benchmark matched the filter\n";
-    return 1;
-  }
-  return 0;
+  return relgeo_bench::finish(ran, "relgeo_linear_benchmark");
 }

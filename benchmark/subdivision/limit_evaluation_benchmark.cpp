@@ -215,6 +215,5 @@ int main(int argc, char** argv) {
   Throughput_reporter reporter;
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   reporter.print(std::cout);
-  benchmark::Shutdown();
-  return ran == 0 ? 1 : 0;
+  return relgeo_bench::finish(ran, "relgeo_limit_evaluation_benchmark");
 }

@@ -173,6 +173,5 @@ int main(int argc, char** argv) {
   Table_reporter reporter;
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   reporter.print(std::cout, order);
-  benchmark::Shutdown();
-  return ran == 0 ? 1 : 0;
+  return relgeo_bench::finish(ran, "relgeo_subdivision_benchmark");
 }

@@ -3,6 +3,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 #include <random>
 
@@ -159,6 +160,34 @@ TEST(HullExactKernel, RationalAndDoublePathsAgree) {
       EXPECT_EQ(on_doubles.indices, run<Filtered_exact_kernel>(a, grid).indices) << seed;
     }
   }
+}
+
+// Large inputs (where the interior prefilter runs) reject NaN and infinity
+// before anything else, wherever the bad point sits.
+TEST(HullBadInput, NonFiniteCoordinatesInLargeInputs) {
+  for (double bad : {std::numeric_limits<double>::quiet_NaN(), -std::numeric_limits<double>::infinity()})
+    for (std::size_t at : {std::size_t{0}, std::size_t{1234}, std::size_t{4999}}) {
+      auto input = uniform_points(5, 5000);
+      input[at].y = bad;
+      EXPECT_THROW(graham_fortune<Failsafe_kernel<double>>(input), Non_finite_input) << at;
+      EXPECT_THROW(monotone_chain<Filtered_exact_kernel>(input), Non_finite_input) << at;
+      EXPECT_THROW(graham_fortune<Filtered_exact_kernel>(input, {}, Hull_options{.discard_interior = false}),
+                   Non_finite_input)
+          << at;
+    }
+}
+
+// Degenerate large inputs keep their documented results with the prefilter on.
+TEST(HullDegenerateInput, LargeEqualAndCollinearInputs) {
+  const std::vector<P2> equal(3000, P2{0.25, -7});
+  std::vector<P2> collinear;
+  for (int i = 0; i < 3000; ++i) collinear.push_back({double((i * 7919) % 3000), 2.0 * ((i * 7919) % 3000) + 1});
+  const std::size_t first = 0, last = static_cast<std::size_t>(std::find(collinear.begin(), collinear.end(), P2{2999, 5999}) - collinear.begin());
+  const std::size_t lowest = static_cast<std::size_t>(std::find(collinear.begin(), collinear.end(), P2{0, 1}) - collinear.begin());
+  EXPECT_EQ(graham_fortune<Failsafe_kernel<double>>(equal).indices, (std::vector<std::size_t>{first}));
+  EXPECT_EQ(monotone_chain<Filtered_exact_kernel>(equal).indices, (std::vector<std::size_t>{first}));
+  EXPECT_EQ(graham_fortune<Failsafe_kernel<double>>(collinear).indices, (std::vector<std::size_t>{lowest, last}));
+  EXPECT_EQ(monotone_chain<Filtered_exact_kernel>(collinear).indices, (std::vector<std::size_t>{lowest, last}));
 }
 
 // Chains computed with wrong naive answers can name a sorted position twice;

@@ -65,18 +65,38 @@ class Command_line {
   std::list<std::string> owned_;  // the added arguments (stable addresses)
 };
 
-/// Google Benchmark's console reporter (colour on a terminal) or, for
-/// --benchmark_format=json, its JSON reporter.
+/// Tabular console output, in colour only on a terminal.
+inline benchmark::ConsoleReporter::OutputOptions console_options() {
+  const char* term = std::getenv("TERM");
+  const bool color = isatty(STDOUT_FILENO) && term && std::strcmp(term, "dumb") != 0;
+  return color ? benchmark::ConsoleReporter::OO_ColorTabular : benchmark::ConsoleReporter::OO_Tabular;
+}
+
+/// Google Benchmark's console reporter or, for --benchmark_format=json, its
+/// JSON reporter.
 inline std::unique_ptr<benchmark::BenchmarkReporter> make_display_reporter(const std::string& format,
                                                                           const char* program) {
   if (format == "json") return std::make_unique<benchmark::JSONReporter>();
   if (format == "csv")  // deprecated by Google Benchmark: not offered here
     std::cerr << program << ": --benchmark_format=csv unsupported, using console\n";
-  const char* term = std::getenv("TERM");
-  const bool color = isatty(STDOUT_FILENO) && term && std::strcmp(term, "dumb") != 0;
-  return std::make_unique<benchmark::ConsoleReporter>(
-      color ? benchmark::ConsoleReporter::OO_ColorTabular : benchmark::ConsoleReporter::OO_Tabular);
+  return std::make_unique<benchmark::ConsoleReporter>(console_options());
 }
+
+/// The console output, and collect() called on every measured run (not the
+/// aggregates of repetitions, not runs that reported an error): the base of
+/// the suites whose summary table is built from their runs.
+class Collecting_reporter : public benchmark::ConsoleReporter {
+ public:
+  Collecting_reporter() : ConsoleReporter(console_options()) {}
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs)
+      if (r.run_type == Run::RT_Iteration && !r.error_occurred && r.iterations > 0) collect(r);
+  }
+
+ protected:
+  virtual void collect(const Run& run) = 0;
+};
 
 /// Ends a main: shuts Google Benchmark down and returns the exit status, 1
 /// (with a message on stderr) when no benchmark matched the filter.

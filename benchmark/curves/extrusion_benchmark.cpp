@@ -17,8 +17,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -71,17 +69,11 @@ void bench(benchmark::State& state, bool prune) {
   state.counters["pairs"] = static_cast<double>(r.pairs_computed);
 }
 
-class Collecting_reporter : public benchmark::ConsoleReporter {
- public:
-  Collecting_reporter() : ConsoleReporter(isatty(STDOUT_FILENO) ? OO_ColorTabular : OO_Tabular) {}
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.run_type != Run::RT_Iteration || r.error_occurred || r.iterations <= 0) continue;
-      const std::string name = r.run_name.function_name;  // extrusion/<kernel>/<algorithm>[/no-prune]
-      const double t = relgeo_bench::to_seconds(r.GetAdjustedRealTime(), r.time_unit);
-      seconds()[name.substr(name.find('/') + 1)][std::stoul(r.run_name.args)] = t;
-    }
+class Extrusion_reporter : public relgeo_bench::Collecting_reporter {
+  void collect(const Run& r) override {
+    const std::string name = r.run_name.function_name;  // extrusion/<kernel>/<algorithm>[/no-prune]
+    const double t = relgeo_bench::to_seconds(r.GetAdjustedRealTime(), r.time_unit);
+    seconds()[name.substr(name.find('/') + 1)][std::stoul(r.run_name.args)] = t;
   }
 };
 
@@ -122,7 +114,7 @@ int main(int argc, char** argv) {
   add<Exact_kernel, Monotone_chain_hull>("exact/monotone-chain", {100, 1000, 10000});
   add<Cgal_kernel<CGAL::Epick>, Cgal_hull>("cgal-epick/cgal", all);
   add<Failsafe_kernel<double>, Graham_fortune_hull>("failsafe<double>/graham-fortune", {100, 1000}, false);
-  Collecting_reporter reporter;
+  Extrusion_reporter reporter;
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   print_table();
   return relgeo_bench::finish(ran, "relgeo_extrusion_benchmark");

@@ -17,8 +17,6 @@
 // Defaults, unless given: --benchmark_min_time=0.2 --benchmark_repetitions=1.
 #include <benchmark/benchmark.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -95,20 +93,13 @@ void bench_solve(benchmark::State& state, Linear_solver method) {
 }
 
 /// Console output plus the per-run real time, for the ratio table.
-class Collecting_reporter : public benchmark::ConsoleReporter {
- public:
-  Collecting_reporter() : ConsoleReporter(isatty(STDOUT_FILENO) ? OO_ColorTabular : OO_Tabular) {}
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.run_type != Run::RT_Iteration || r.error_occurred || r.iterations <= 0) continue;
-      const std::string name = r.run_name.function_name + "/" + r.run_name.args;  // solve/<method>/<n>
-      const auto a = name.find('/'), b = name.find('/', a + 1);
-      const std::string method = name.substr(a + 1, b - a - 1);
-      const int n = std::stoi(name.substr(b + 1));
-      const double t = 1e9 * relgeo_bench::to_seconds(r.GetAdjustedRealTime(), r.time_unit);
-      results()[{n, method}].ns = t;
-    }
+class Linear_reporter : public relgeo_bench::Collecting_reporter {
+  void collect(const Run& r) override {
+    const std::string name = r.run_name.function_name + "/" + r.run_name.args;  // solve/<method>/<n>
+    const auto a = name.find('/'), b = name.find('/', a + 1);
+    const std::string method = name.substr(a + 1, b - a - 1);
+    const int n = std::stoi(name.substr(b + 1));
+    results()[{n, method}].ns = 1e9 * relgeo_bench::to_seconds(r.GetAdjustedRealTime(), r.time_unit);
   }
 };
 
@@ -156,7 +147,7 @@ int main(int argc, char** argv) {
     for (int size : {10, 30, 100, 300, 1000}) b->Arg(size);
     b->Unit(benchmark::kMicrosecond);
   }
-  Collecting_reporter reporter;
+  Linear_reporter reporter;
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   print_ratios();
   return relgeo_bench::finish(ran, "relgeo_linear_benchmark");

@@ -167,19 +167,15 @@ void register_all() {
   }
 }
 
-class Throughput_reporter : public benchmark::ConsoleReporter {
+class Throughput_reporter : public relgeo_bench::Collecting_reporter {
  public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.run_type != Run::RT_Iteration || r.error_occurred) continue;
-      const auto it = r.counters.find("items_per_second");
-      if (it == r.counters.end()) continue;
-      auto& best = best_[r.run_name.function_name];
-      best = std::max(best, double(it->second));
-      if (std::find(order_.begin(), order_.end(), r.run_name.function_name) == order_.end())
-        order_.push_back(r.run_name.function_name);
-    }
+  void collect(const Run& r) override {
+    const auto it = r.counters.find("items_per_second");
+    if (it == r.counters.end()) return;
+    auto& best = best_[r.run_name.function_name];
+    best = std::max(best, double(it->second));
+    if (std::find(order_.begin(), order_.end(), r.run_name.function_name) == order_.end())
+      order_.push_back(r.run_name.function_name);
   }
   void print(std::ostream& out) const {
     if (best_.empty()) return;

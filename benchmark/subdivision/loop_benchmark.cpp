@@ -93,13 +93,10 @@ std::vector<Bench_mesh> meshes() {
   return m;
 }
 
-class Table_reporter : public benchmark::ConsoleReporter {
+class Table_reporter : public relgeo_bench::Collecting_reporter {
  public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs)
-      if (r.run_type == Run::RT_Iteration && !r.error_occurred)
-        times_[r.run_name.function_name].push_back(r.GetAdjustedCPUTime());  // ms
+  void collect(const Run& r) override {
+    times_[r.run_name.function_name].push_back(r.GetAdjustedCPUTime());  // ms
   }
   void print(std::ostream& out, const std::vector<std::string>& order) const {
     // group by loop/<mesh>/L<k>

@@ -85,7 +85,8 @@ run_experiment() {
 # suites (CGAL, OpenMesh, Eigen LU) and file IO exercise other libraries' code
 # at a high compile cost; the Release run covers them.
 sanitized_suites=(
-  relgeo_kernel_tests relgeo_kernel_soundness_tests relgeo_kernel_cgal_tests
+  relgeo_core_tests relgeo_kernel_tests relgeo_kernel_soundness_tests relgeo_kernel_cgal_tests
+  relgeo_kernel_environment_tests
   relgeo_hull_error_tests relgeo_hull_kernel_tests relgeo_hull_property_tests
   relgeo_linear_tests relgeo_curves_tests relgeo_extrusion_tests
   relgeo_mesh_tests relgeo_subdivision_tests relgeo_subdivision_limit_tests

@@ -13,6 +13,7 @@
 #include <type_traits>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/kernel/certified_sign.h"
 #include "relgeo/kernel/floating_point.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
@@ -50,7 +51,8 @@ struct Cgal_kernel_name<CGAL::Epeck> {
 /// points.
 ///
 /// A kernel is certified when it has filtered (exact) predicates or an exact
-/// number type. For certified kernels with double coordinates (Epick), points
+/// number type; its predicates then run in the default floating-point
+/// environment whatever the caller set (core/fp_environment.h). For certified kernels with double coordinates (Epick), points
 /// with NaN or infinite coordinates give `uncertain` (CGAL's exact fallback
 /// cannot convert them); kernels with exact constructions refuse such points
 /// at construction (Non_finite_input).
@@ -100,34 +102,34 @@ class Cgal_kernel {
   struct Orientation_2 {
     Certified_sign operator()(const Point_2& p, const Point_2& q, const Point_2& r) const {
       if (refuses(p) || refuses(q) || refuses(r)) return Certified_sign::uncertain;
-      return from_cgal(typename K::Orientation_2()(p, q, r));
+      return guarded([&] { return from_cgal(typename K::Orientation_2()(p, q, r)); });
     }
   };
   struct Orientation_3 {
     Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r,
                               const Point_3& s) const {
       if (refuses(p) || refuses(q) || refuses(r) || refuses(s)) return Certified_sign::uncertain;
-      return from_cgal(typename K::Orientation_3()(p, q, r, s));
+      return guarded([&] { return from_cgal(typename K::Orientation_3()(p, q, r, s)); });
     }
   };
   struct Compare_xy_2 {
     Certified_sign operator()(const Point_2& p, const Point_2& q) const {
       if (refuses(p) || refuses(q)) return Certified_sign::uncertain;
-      return from_cgal(typename K::Compare_xy_2()(p, q));
+      return guarded([&] { return from_cgal(typename K::Compare_xy_2()(p, q)); });
     }
   };
   /// Same contract as relgeo's own Coplanar_orientation_3 (kernel_base.h).
   struct Coplanar_orientation_3 {
     Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r) const {
       if (refuses(p) || refuses(q) || refuses(r)) return Certified_sign::uncertain;
-      return from_cgal(typename K::Coplanar_orientation_3()(p, q, r));
+      return guarded([&] { return from_cgal(typename K::Coplanar_orientation_3()(p, q, r)); });
     }
     Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r,
                               const Point_3& s) const {
       if (refuses(p) || refuses(q) || refuses(r) || refuses(s)) return Certified_sign::uncertain;
-      if (typename K::Coplanar_orientation_3()(p, q, r) == CGAL::COLLINEAR)
+      if (guarded([&] { return from_cgal(typename K::Coplanar_orientation_3()(p, q, r)); }) == Certified_sign::zero)
         throw Precondition_violation("coplanar_orientation(p,q,r,s): p, q, r are collinear");
-      return from_cgal(typename K::Coplanar_orientation_3()(p, q, r, s));
+      return guarded([&] { return from_cgal(typename K::Coplanar_orientation_3()(p, q, r, s)); });
     }
   };
 
@@ -139,6 +141,16 @@ class Cgal_kernel {
   Coplanar_orientation_3 coplanar_orientation_3_object() const { return {}; }
 
  private:
+  // CGAL's filters assume round to nearest without FTZ/DAZ (measured: under
+  // denormals-are-zero Epick answers `zero` for nearly every orientation of
+  // subnormal coordinates): a certified kernel evaluates CGAL's predicates in
+  // the default floating-point environment, whatever the caller set; that
+  // costs one read of the control registers per call.
+  template <class F>
+  static Certified_sign guarded(const F& f) {
+    if constexpr (is_certified) return internal::in_default_fp_environment(f);
+    else return f();
+  }
   template <class S>
   static Certified_sign from_cgal(S s) {
     return static_cast<Certified_sign>(static_cast<int>(s));

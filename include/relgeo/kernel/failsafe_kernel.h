@@ -5,6 +5,7 @@
 #include <string>
 #include <type_traits>
 
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/kernel/floating_point.h"
 #include "relgeo/kernel/internal/kernel_base.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
@@ -20,11 +21,15 @@ namespace relgeo {
 /// (semi-static: eps * Mx * My, Mx the largest |x-difference|). Inside the
 /// bound it answers `uncertain`; outside, the answer is the exact sign of the
 /// determinant of the *given* coordinates. The constants and the proof are in
-/// internal/semi_static_filter.h: eps_2 = 8u(1+8u), eps_3 = 49u (u = unit
-/// roundoff of T; 8.8817841970012563e-16 and 5.4400928206632e-15 for double).
-/// Non-finite coordinates and magnitudes outside the range where the proof
-/// holds (for double roughly 2^-468..2^510 in 2D, 2^-306..2^340 in 3D) give
-/// `uncertain`. Constructions are plain floating point.
+/// internal/semi_static_filter.h: eps_2 = 16u(1+16u), eps_3 = 97u (u = unit
+/// roundoff of T; 1.7763568394002532e-15 and 1.0769163338864018e-14 for
+/// double), proven for every rounding mode and under flush-to-zero /
+/// denormals-are-zero, so no caller's floating-point environment can make a
+/// definite answer wrong. Exact degeneracies (all points sharing one
+/// coordinate) are answered `zero`. Non-finite coordinates and magnitudes
+/// outside the range where the proof holds (for double roughly 2^-450..2^510
+/// in 2D, 2^-297..2^340 in 3D) give `uncertain`. Constructions are plain
+/// floating point.
 ///
 /// Stable algorithms (graham_fortune) use the `uncertain` answer to stay
 /// consistent and so achieve a provable backward error.
@@ -55,7 +60,15 @@ class Failsafe_kernel : public internal::Kernel_base<Failsafe_kernel<T>, T> {
   static constexpr std::optional<double> orientation_2_error_bound = round_up_to_double(C::eps_2);
   static constexpr std::optional<double> orientation_3_error_bound = round_up_to_double(C::eps_3);
 
-  static FT from_double(double v) { return static_cast<FT>(v); }
+  /// v rounded to T. A value in T's subnormal range is not flushed to zero
+  /// even under flush-to-zero (converted again in the default environment).
+  static FT from_double(double v) {
+    const FT r = static_cast<FT>(v);
+    if constexpr (sizeof(FT) < sizeof(double))
+      if (r == 0 && v != 0) [[unlikely]]
+        return internal::in_default_fp_environment([&] { return static_cast<FT>(v); });
+    return r;
+  }
   static Certified_sign compare_ft(const FT& a, const FT& b) {
     return internal::compare_certified(a, b);
   }

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/kernel/floating_point.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/exact_dyadic.h"
@@ -28,7 +29,9 @@ enum class Filter_stage {
 
 /// \brief Double-coordinate kernel with exact predicates (like CGAL's Epick):
 /// each predicate tries
-///  1. the semi-static epsilon test of Failsafe_kernel<double>,
+///  1. the semi-static epsilon test of Failsafe_kernel<double> (valid in
+///     every floating-point environment; the later stages run in the default
+///     one, established for them when the caller changed it),
 ///  2. interval arithmetic (relgeo::Interval),
 ///  3. for orientation_2 with coordinates 0 or of magnitude in [2^-400, 2^500]:
 ///     the exact sign of the determinant as a sum of 16 doubles
@@ -80,7 +83,6 @@ class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel
           internal::orientation_2_epsilon_test<double>(p.x, p.y, q.x, q.y, r.x, r.y);
       if (t.decided) [[likely]]
         return t.sign;
-      if (t.exact_zero) return Certified_sign::zero;
       return after_semi_static_2(p, q, r).first;
     }
   };
@@ -91,18 +93,23 @@ class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel
           p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z, s.x, s.y, s.z);
       if (t.decided) [[likely]]
         return t.sign;
-      if (t.exact_zero) return Certified_sign::zero;
       return after_semi_static_3(p, q, r, s).first;
     }
   };
   Orientation_2 orientation_2_object() const { return {}; }
   Orientation_3 orientation_3_object() const { return {}; }
  private:
-  // Stages 2 and 3, out of line so the inlined fast path stays small.
+  // The later stages, out of line so the inlined fast path stays small. They
+  // rely on round to nearest without FTZ/DAZ (error-free transformations,
+  // outward rounding, decoding doubles), so they run in the default
+  // floating-point environment whatever the caller set (core/fp_environment.h).
   [[gnu::noinline]] static std::pair<Certified_sign, Filter_stage> after_semi_static_2(
       const Point_2& p, const Point_2& q, const Point_2& r) {
     if (!all_finite(p.x, p.y, q.x, q.y, r.x, r.y))
       return {Certified_sign::uncertain, Filter_stage::undecidable};
+    if (internal::exactly_degenerate_2(p.x, p.y, q.x, q.y, r.x, r.y))
+      return {Certified_sign::zero, Filter_stage::semi_static};
+    const Default_fp_environment environment;
     // In its range the expansion always decides, and faster than intervals
     // that may not (56 -> 41 ns per call on near-collinear input); outside, intervals
     // are tried before GMP.
@@ -118,6 +125,9 @@ class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel
     const std::array<double, 12> c{p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z, s.x, s.y, s.z};
     for (double v : c)
       if (!std::isfinite(v)) return {Certified_sign::uncertain, Filter_stage::undecidable};
+    if (internal::exactly_degenerate_3(p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z, s.x, s.y, s.z))
+      return {Certified_sign::zero, Filter_stage::semi_static};
+    const Default_fp_environment environment;
     const Certified_sign o = internal::orientation_3_determinant<Interval>(
                                  p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z, s.x, s.y, s.z)
                                  .sign();

@@ -1,20 +1,20 @@
 // relgeo/kernel/interval.h — closed intervals of doubles with outward rounding.
 //
-// Each operation is evaluated in the default round-to-nearest mode and its
-// result widened by (at least) one ulp on the side of the exact value (found
-// with TwoSum and TwoProduct for sums and products of points; on both sides
-// otherwise). This
-// needs no change of the global rounding mode (no fesetround, no
-// -frounding-math, nothing a client's code can disturb) and is sound because a
-// correctly rounded result lies within one ulp of the exact one, also under
-// underflow (error <= half the smallest subnormal) and overflow (rounded to
-// +-inf, whose neighbour is the largest finite double).
+// Each operation is evaluated in round-to-nearest and its result widened by
+// (at least) one ulp on the side of the exact value (found with TwoSum and
+// TwoProduct for sums and products of points; on both sides otherwise). This
+// needs no change of the rounding mode (no fesetround, no -frounding-math) and
+// is sound because a correctly rounded result lies within one ulp of the exact
+// one, also under underflow (error <= half the smallest subnormal) and
+// overflow (rounded to +-inf, whose neighbour is the largest finite double).
+// It assumes the default floating-point environment (round to nearest, no
+// FTZ/DAZ): relgeo's kernels and algorithms establish it around their interval
+// computations (Default_fp_environment, core/fp_environment.h); a client doing
+// interval arithmetic of its own under another environment must do the same.
 //
 // Exact operations stay exact (a product with the point factor [0,0] too), so
 // exactly collinear points with representable differences give the point
 // interval [0,0] and an exact `zero` instead of a spurious `uncertain`.
-// So points that share coordinates give the point interval [0,0] and an exact
-// `zero` sign instead of a spurious `uncertain`.
 //
 // NaN endpoints propagate and make every comparison uncertain.
 #pragma once
@@ -125,6 +125,7 @@ class Interval {
       return {std::nextafter(p, -kInf), std::nextafter(p, kInf)};
     const double e = product_error(x, y, p);
     const double lo = down(p), hi = up(p);
+    if (!std::isfinite(e)) [[unlikely]] return {lo, hi};  // no exact error: widen both sides
     return {e >= 0 ? p : lo, e <= 0 ? p : hi};
   }
   static double product_error(double x, double y, double p) { return internal::two_product_error(x, y, p); }

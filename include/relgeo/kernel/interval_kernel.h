@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/kernel/floating_point.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/kernel_base.h"
@@ -19,6 +20,8 @@ namespace relgeo {
 ///
 /// Constructions are intervals too, so a constructed point carries an
 /// enclosure of the exact point. Non-finite coordinates give `uncertain`.
+/// Interval arithmetic needs round to nearest without FTZ/DAZ: the
+/// predicates run in that environment whatever the caller set.
 class Interval_kernel : public internal::Kernel_base<Interval_kernel, Interval> {
  public:
   static std::string name() { return "interval"; }
@@ -31,21 +34,27 @@ class Interval_kernel : public internal::Kernel_base<Interval_kernel, Interval> 
   static constexpr std::optional<double> orientation_3_error_bound = std::nullopt;
 
   static FT from_double(double v) { return Interval(v); }
-  static Certified_sign compare_ft(const FT& a, const FT& b) { return compare(a, b); }
+  static Certified_sign compare_ft(const FT& a, const FT& b) {
+    return internal::in_default_fp_environment([&] { return compare(a, b); });
+  }
 
   struct Orientation_2 {
     Certified_sign operator()(const Point_2& p, const Point_2& q, const Point_2& r) const {
       if (!finite(p) || !finite(q) || !finite(r)) return Certified_sign::uncertain;
-      return internal::orientation_2_determinant<Interval>(p.x, p.y, q.x, q.y, r.x, r.y).sign();
+      return internal::in_default_fp_environment([&] {
+        return internal::orientation_2_determinant<Interval>(p.x, p.y, q.x, q.y, r.x, r.y).sign();
+      });
     }
   };
   struct Orientation_3 {
     Certified_sign operator()(const Point_3& p, const Point_3& q, const Point_3& r,
                               const Point_3& s) const {
       if (!finite(p) || !finite(q) || !finite(r) || !finite(s)) return Certified_sign::uncertain;
-      return internal::orientation_3_determinant<Interval>(p.x, p.y, p.z, q.x, q.y, q.z, r.x,
-                                                           r.y, r.z, s.x, s.y, s.z)
-          .sign();
+      return internal::in_default_fp_environment([&] {
+        return internal::orientation_3_determinant<Interval>(p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y,
+                                                             r.z, s.x, s.y, s.z)
+            .sign();
+      });
     }
   };
   Orientation_2 orientation_2_object() const { return {}; }

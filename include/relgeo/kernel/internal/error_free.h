@@ -20,10 +20,13 @@ inline Two_terms two_sum(double a, double b) {
 }
 inline Two_terms two_diff(double a, double b) { return two_sum(a, -b); }
 
-/// The exact error x*y - p of p = fl(x * y), without calling std::fma (a libm
-/// call unless the target has FMA, e.g. -march=haswell). Dekker's product is
-/// exact while no split overflows (|x|, |y| < 2^995) and p does not underflow
-/// (|p| >= 2^-969); outside it falls back to fma.
+/// The exact error x*y - p of p = fl(x * y) (finite), without calling std::fma
+/// (a libm call unless the target has FMA, e.g. -march=haswell). Dekker's
+/// product is exact while no split overflows (|x|, |y| < 2^995), the product
+/// of the high parts does not overflow (they exceed x and y by up to 2^-26
+/// relative, so their product can pass DBL_MAX when p is within about 2^-26
+/// of it: |p| < 2^1020 excludes that) and p does not underflow
+/// (|p| >= 2^-969); outside it falls back to the correctly rounded fma.
 #if defined(__FMA__) || defined(__FP_FAST_FMA)
 inline double two_product_error(double x, double y, double p) { return __builtin_fma(x, y, -p); }
 #else
@@ -33,7 +36,8 @@ inline void veltkamp_split(double a, double& hi, double& lo) {
   lo = a - hi;
 }
 inline double two_product_error(double x, double y, double p) {
-  if (std::abs(x) >= 0x1p995 || std::abs(y) >= 0x1p995) [[unlikely]] return std::fma(x, y, -p);
+  if (std::abs(x) >= 0x1p995 || std::abs(y) >= 0x1p995 || std::abs(p) >= 0x1p1020) [[unlikely]]
+    return std::fma(x, y, -p);
   double xh, xl, yh, yl;
   veltkamp_split(x, xh, xl);
   veltkamp_split(y, yh, yl);

@@ -14,10 +14,9 @@
 #include <algorithm>
 #include <array>
 #include <climits>
-#include <cmath>
-#include <cstdint>
 
 #include "relgeo/kernel/certified_sign.h"
+#include "relgeo/kernel/internal/binary_parts.h"
 
 namespace relgeo::internal {
 
@@ -45,20 +44,15 @@ class Mpz_scratch {
 template <std::size_t N, std::size_t M>
 void load_scaled_integers(const std::array<double, N>& v, Mpz_scratch<M>& z) {
   static_assert(N <= M);
-  std::array<std::int64_t, N> mant{};
-  std::array<int, N> expo{};
+  std::array<Binary_parts, N> parts{};
   int emin = INT_MAX;
   for (std::size_t i = 0; i < N; ++i) {
-    if (v[i] == 0) continue;
-    int e = 0;
-    const double f = std::frexp(v[i], &e);                    // v = f * 2^e, 0.5 <= |f| < 1
-    mant[i] = static_cast<std::int64_t>(std::ldexp(f, 53));   // exact: 53-bit integer
-    expo[i] = e - 53;                                         // v = mant * 2^expo
-    emin = std::min(emin, expo[i]);
+    parts[i] = binary_parts(v[i]);
+    if (parts[i].mantissa != 0) emin = std::min(emin, parts[i].exponent);
   }
   for (std::size_t i = 0; i < N; ++i) {
-    mpz_set_si(z[i], static_cast<long>(mant[i]));
-    if (mant[i] != 0) mpz_mul_2exp(z[i], z[i], static_cast<mp_bitcnt_t>(expo[i] - emin));
+    set_mpz(z[i], parts[i].mantissa);
+    if (parts[i].mantissa != 0) mpz_mul_2exp(z[i], z[i], static_cast<mp_bitcnt_t>(parts[i].exponent - emin));
   }
 }
 

@@ -9,13 +9,18 @@
 // coplanar_orientationC3 is) and the simple constructions.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <type_traits>
 #include <span>
 
 #include "relgeo/core/errors.h"
 #include "relgeo/kernel/certified_sign.h"
+#include "relgeo/kernel/floating_point.h"
+#include "relgeo/kernel/internal/semi_static_filter.h"
 #include "relgeo/kernel/point.h"
 
 namespace relgeo::internal {
@@ -29,13 +34,36 @@ bool is_finite_value(const FT& v) {
   else return true;
 }
 
-/// Certified comparison of two IEEE values: `uncertain` when either is NaN.
+/// Certified comparison of two IEEE values: `uncertain` when either is NaN or
+/// infinite. Float and double are compared on their bits (ordered as
+/// integers), because a comparison instruction reads two different subnormals
+/// as equal under denormals-are-zero (core/fp_environment.h).
 template <class T>
-constexpr Certified_sign compare_certified(T a, T b) {
-  if (a < b) return Certified_sign::negative;
-  if (b < a) return Certified_sign::positive;
-  if (a == b) return Certified_sign::zero;
-  return Certified_sign::uncertain;
+inline Certified_sign compare_certified(T a, T b) {
+  if (!all_finite(a, b)) return Certified_sign::uncertain;
+  if constexpr (sizeof(T) == 8 || sizeof(T) == 4) {
+    if (same_value(a, b)) return Certified_sign::zero;  // also +0 and -0
+    using Int = std::conditional_t<sizeof(T) == 8, std::int64_t, std::int32_t>;
+    constexpr Int magnitude = std::numeric_limits<Int>::max();
+    // Sign-magnitude bits to an order-preserving two's complement key.
+    const auto key = [](T v) {
+      const Int i = std::bit_cast<Int>(v);
+      return i ^ ((i >> (8 * sizeof(Int) - 1)) & magnitude);
+    };
+    return key(a) < key(b) ? Certified_sign::negative : Certified_sign::positive;
+  } else if constexpr (std::numeric_limits<T>::digits == 64) {
+    // x87 long double, on its bits as well (see same_value): finite values
+    // order as (exponent, significand), reversed for negative ones.
+    if (same_value(a, b)) return Certified_sign::zero;
+    const X87_parts x = x87_parts(a), y = x87_parts(b);
+    const bool x_negative = x.sign && x.significand != 0, y_negative = y.sign && y.significand != 0;
+    if (x_negative != y_negative) return x_negative ? Certified_sign::negative : Certified_sign::positive;
+    const bool smaller_magnitude = x.exponent != y.exponent ? x.exponent < y.exponent : x.significand < y.significand;
+    return smaller_magnitude != x_negative ? Certified_sign::negative : Certified_sign::positive;
+  } else {
+    if (a < b) return Certified_sign::negative;
+    return b < a ? Certified_sign::positive : Certified_sign::zero;
+  }
 }
 
 template <class Derived, class FT_>

@@ -1,43 +1,55 @@
 // relgeo/kernel/internal/semi_static_filter.h — Fortune's epsilon test for the
 // orientation determinants in a binary floating-point type T, with a bound
-// derived from the operands (semi-static), as in CGAL's Static_filters.
+// derived from the operands (semi-static), as in CGAL's Static_filters, but
+// valid in every floating-point environment a caller can set (core/fp_environment.h):
+// any IEEE rounding mode, flush-to-zero and denormals-are-zero.
 //
-// Derivation (u = unit roundoff of T, gamma_n = n u / (1 - n u), Higham,
-// "Accuracy and Stability of Numerical Algorithms", Lemma 3.1). Let a^ = fl(q.x - p.x)
-// etc. be the computed differences, a^ = a (1 + d), |d| <= u; the exact
-// determinant D and the computed one D^ are sums of the same monomials m of
-// differences. Write each monomial in the computed differences, m^:
-//   orientation_2: D^ = sum m^ (1 + t2), D = sum m^ (1 + t2'), 2 monomials,
-//     |t2|, |t2'| <= gamma_2, each |m^| <= Mx My, Mx = max |x-differences^|
-//     =>  |D^ - D| <= 4 gamma_2 Mx My.
-//   orientation_3: each monomial goes through at most 5 roundings after the
+// Model (u = unit roundoff of T, v = 2u, lambda = the smallest positive normal
+// of T). Every operation gives fl(x op y) = (x op y)(1 + d) + e with |d| <= v
+// (one ulp: round to nearest has |d| <= u, the directed modes |d| < 2u) and
+// |e| <= lambda (a result flushed to zero, or a subnormal rounding error); a
+// subnormal input read as zero (DAZ) changes it by less than lambda. So a
+// computed coordinate difference is a^ = a (1 + d) + e_a with |e_a| <= 3.01
+// lambda. gamma_n = n v / (1 - n v) (Higham, "Accuracy and Stability of
+// Numerical Algorithms", Lemma 3.1, which allows the 1/(1+d) factors below).
+//
+// Let Mx = max |computed x-differences| etc. Write the exact determinant D and
+// the computed D^ in the computed differences (a = (a^ - e_a) / (1 + d_a)):
+//   orientation_2: 2 monomials, each through 2 roundings after its 2
+//     differences: |D^ - D| <= 4 gamma_2 Mx My + 6.1 lambda (Mx + My) + 3.2 lambda.
+//   orientation_3: 6 monomials, each through at most 5 roundings after its 3
 //     differences (minor product, minor difference, outer product, two outer
-//     sums) and 3 differences, 6 monomials, each |m^| <= Mx My Mz
-//     =>  |D^ - D| <= 6 (gamma_5 + gamma_3) Mx My Mz.
-// The test itself computes fl(fl(eps Mx) My) >= eps Mx My (1-u)^2 (and
-// (1-u)^3 in 3D). So the sign of D^ is the exact sign whenever |D^| exceeds the
-// computed bound, provided
-//   eps_2 >= 4 gamma_2 / (1-u)^2          -> eps_2 = 8u (1 + 8u)  (exact in T)
-//   eps_3 >= 6 (gamma_5 + gamma_3)/(1-u)^3 -> eps_3 = 49u           (exact in T)
-// For double: eps_2 = 8.8817841970012563e-16 (CGAL's derivation gives the
-// slightly larger 8.8872057372592798e-16), eps_3 = 5.4400928206632e-15.
+//     sums): |D^ - D| <= 6 (gamma_5 + gamma_3) Mx My Mz
+//                         + 20 lambda (Mx My + My Mz + Mx Mz) + 10 lambda (Mx + My + Mz) + 6 lambda.
+// The test computes its bound fl(fl(eps Mx) My) >= eps Mx My (1-v)^2 (and
+// (1-v)^3 in 3D; no underflow there, by the range guard below). So the sign of
+// D^ is the exact sign whenever |D^| exceeds the computed bound, provided, with
+// L a lower bound of every maximum (the range guard),
+//   eps_2 (1-v)^2 - 4 gamma_2            >= 12.2 lambda / L + 3.2 lambda / L^2
+//   eps_3 (1-v)^3 - 6 (gamma_5 + gamma_3) >= 60 lambda / L + 30 lambda / L^2 + 6 lambda / L^3.
+// eps_2 = 16u (1 + 16u) and eps_3 = 97u leave about 32 v^2 and v / 2 on the
+// left (exact in T); low_2 and low_3 make the right-hand sides smaller still
+// (test/kernel/filter_bound_test.cpp checks both inequalities exactly).
+// For double: eps_2 = 1.7763568394002532e-15, eps_3 = 1.0769163338864018e-14,
+// twice CGAL's constants, which assume round to nearest.
 //
-// Underflow and overflow void the model fl(x op y) = (x op y)(1 + d). The
-// filter therefore answers only when every maximum lies in [low, high]:
-//  * high keeps every intermediate finite (the largest sum is < 2^max_exponent);
-//  * low makes the absolute error of an underflowing product (at most half the
-//    smallest subnormal, eta/2) negligible against the margin left between
-//    eps and the exact constant (>= 32u^2 relative in 2D, >= u/2 in 3D).
-// A maximum equal to 0 means every difference in that coordinate is exactly 0
-// (fl(q - p) = 0 iff q = p), so D = 0 exactly; that case is answered `zero`
-// when the computed D^ is 0 too (it is not 0 when an operand is NaN/Inf).
-// Everything else (NaN, Inf, out-of-range magnitudes, |D^| <= bound) is
-// `uncertain`.
+// Range guard: the filter answers only when every maximum lies in [low, high]:
+// high keeps every intermediate finite (the largest sum is < 2^max_exponent;
+// under directed rounding an overflow may give the largest finite value
+// instead of infinity, still above high); low is the L above. Outside, and
+// for |D^| <= bound, the test does not decide; an exact degeneracy (every
+// coordinate of one axis the same, so D = 0) is then recognised by comparing
+// the coordinates' bits, which no environment can disturb (exactly_degenerate).
+// Everything else (NaN, Inf, out-of-range magnitudes) is `uncertain`.
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "relgeo/kernel/certified_sign.h"
 #include "relgeo/kernel/floating_point.h"
@@ -58,42 +70,87 @@ constexpr T power_of_two(int k) {
 template <class T>
 struct Orientation_filter_constants {
   static constexpr T u = unit_roundoff_v<T>;
-  static constexpr T eps_2 = 8 * u * (1 + 8 * u);
-  static constexpr T eps_3 = 49 * u;
+  static constexpr T eps_2 = 16 * u * (1 + 16 * u);
+  static constexpr T eps_3 = 97 * u;
   static constexpr int min_e = std::numeric_limits<T>::min_exponent;
   static constexpr int max_e = std::numeric_limits<T>::max_exponent;
   static constexpr int digits = std::numeric_limits<T>::digits;
-  static constexpr T low_2 = power_of_two<T>((min_e + digits) / 2 + 16);
+  static constexpr T low_2 = power_of_two<T>((min_e - 1) / 2 + digits + 8);
   static constexpr T high_2 = power_of_two<T>((max_e - 4) / 2);
-  static constexpr T low_3 = power_of_two<T>((min_e + digits) / 3 + 16);
+  static constexpr T low_3 = power_of_two<T>((min_e + 2 * digits) / 3 + 8);
   static constexpr T high_3 = power_of_two<T>((max_e - 4) / 3);
 };
 
-/// Outcome of the epsilon test, computed without branches.
-///  * decided: the range guards hold and |det| > bound: `sign` is the exact sign;
-///  * otherwise exact_zero: all differences of one coordinate are 0 and det is
-///    0, so the exact determinant is 0;
-///  * otherwise the test cannot tell (`uncertain`).
+/// Outcome of the epsilon test, computed without branches: when `decided`
+/// (the range guards hold and |det| > bound), `sign` is the exact sign.
 struct Epsilon_test {
   Certified_sign sign;  ///< sign of the computed determinant
   bool decided;
-  bool exact_zero;
-  /// The certified answer. The branch on `decided` is the only one, and is
-  /// well predicted on the usual inputs (nearly all decided).
-  Certified_sign answer() const {
-    if (decided) [[likely]]
-      return sign;
-    return exact_zero ? Certified_sign::zero : Certified_sign::uncertain;
-  }
 };
 
 template <class T>
-inline Epsilon_test epsilon_test(T det, T bound, bool in_range, T lo) {
-  // x <= 0 stands for x == 0 on the non-negative |det| and lo (the same answer,
-  // NaN included, with one flag test); & rather than && keeps it branch-free.
-  const T abs_det = std::abs(det);
-  return {sign_of(det), static_cast<bool>(in_range & (abs_det > bound)),
-          static_cast<bool>((abs_det <= 0) & (lo <= 0))};
+inline Epsilon_test epsilon_test(T det, T bound, bool in_range) {
+  // & rather than && keeps it branch-free.
+  return {sign_of(det), static_cast<bool>(in_range & (std::abs(det) > bound))};
+}
+
+/// The fields of an x87 80-bit long double (sign, 15-bit biased exponent,
+/// 64-bit significand with its explicit integer bit).
+struct X87_parts {
+  bool sign;
+  unsigned exponent;
+  std::uint64_t significand;
+};
+template <class T>
+inline X87_parts x87_parts(T v) {
+  static_assert(std::numeric_limits<T>::digits == 64, "x87 extended precision");
+  unsigned char bytes[sizeof(T)];
+  std::memcpy(bytes, &v, sizeof(T));
+  std::uint64_t significand = 0;
+  std::uint16_t sign_exponent = 0;
+  std::memcpy(&significand, bytes, 8);
+  std::memcpy(&sign_exponent, bytes + 8, 2);
+  return {(sign_exponent >> 15) != 0, sign_exponent & 0x7FFFu, significand};
+}
+
+/// Whether a and b are the same value, decided on their bits (a comparison
+/// instruction would read two different subnormals as equal under DAZ).
+/// \pre a and b are finite.
+template <class T>
+inline bool same_value(T a, T b) {
+  if constexpr (sizeof(T) == 8 || sizeof(T) == 4) {
+    using Bits = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
+    constexpr Bits magnitude = ~Bits{0} >> 1;
+    const Bits x = std::bit_cast<Bits>(a), y = std::bit_cast<Bits>(b);
+    return x == y || ((x | y) & magnitude) == 0;  // equal, or +0 and -0
+  } else if constexpr (std::numeric_limits<T>::digits == 64) {
+    // x87 long double: its own arithmetic has no FTZ/DAZ, but the compiler may
+    // compare two long doubles converted from doubles as the doubles (SSE,
+    // where DAZ applies), so the value is read from its bits here too.
+    const X87_parts x = x87_parts(a), y = x87_parts(b);
+    return (x.sign == y.sign && x.exponent == y.exponent && x.significand == y.significand) ||
+           (x.significand == 0 && y.significand == 0);
+  } else {
+    return a == b;  // e.g. binary128 long double, in software
+  }
+}
+
+/// Whether every point has the same first, or the same second (or third)
+/// coordinate, so that the orientation determinant is exactly 0: the exact
+/// degeneracies the epsilon test leaves undecided (its range guard needs
+/// nonzero differences). Finite coordinates only (NaN and Inf give false).
+template <class T>
+inline bool exactly_degenerate_2(T px, T py, T qx, T qy, T rx, T ry) {
+  if (!all_finite(px, py, qx, qy, rx, ry)) return false;
+  return (same_value(px, qx) && same_value(px, rx)) || (same_value(py, qy) && same_value(py, ry));
+}
+template <class T>
+inline bool exactly_degenerate_3(T px, T py, T pz, T qx, T qy, T qz, T rx, T ry, T rz, T sx, T sy,
+                                 T sz) {
+  if (!all_finite(px, py, pz, qx, qy, qz, rx, ry, rz, sx, sy, sz)) return false;
+  return (same_value(px, qx) && same_value(px, rx) && same_value(px, sx)) ||
+         (same_value(py, qy) && same_value(py, ry) && same_value(py, sy)) ||
+         (same_value(pz, qz) && same_value(pz, rz) && same_value(pz, sz));
 }
 
 /// The epsilon test of orientation_2 in T.
@@ -104,7 +161,7 @@ inline Epsilon_test orientation_2_epsilon_test(T px, T py, T qx, T qy, T rx, T r
   const T mx = std::max(std::abs(qx - px), std::abs(rx - px));
   const T my = std::max(std::abs(qy - py), std::abs(ry - py));
   const T lo = std::min(mx, my), hi = std::max(mx, my);
-  return epsilon_test(det, C::eps_2 * mx * my, (lo >= C::low_2) & (hi <= C::high_2), lo);
+  return epsilon_test(det, C::eps_2 * mx * my, (lo >= C::low_2) & (hi <= C::high_2));
 }
 
 /// The epsilon test of orientation_3 in T.
@@ -118,21 +175,28 @@ inline Epsilon_test orientation_3_epsilon_test(T px, T py, T pz, T qx, T qy, T q
   const T my = std::max({std::abs(qy - py), std::abs(ry - py), std::abs(sy - py)});
   const T mz = std::max({std::abs(qz - pz), std::abs(rz - pz), std::abs(sz - pz)});
   const T lo = std::min({mx, my, mz}), hi = std::max({mx, my, mz});
-  return epsilon_test(det, C::eps_3 * mx * my * mz, (lo >= C::low_3) & (hi <= C::high_3), lo);
+  return epsilon_test(det, C::eps_3 * mx * my * mz, (lo >= C::low_3) & (hi <= C::high_3));
 }
 
 /// Epsilon-tested sign of orientation_2 in T; `uncertain` when the test cannot
 /// certify the sign of the computed determinant.
 template <class T>
 inline Certified_sign filtered_orientation_2(T px, T py, T qx, T qy, T rx, T ry) {
-  return orientation_2_epsilon_test<T>(px, py, qx, qy, rx, ry).answer();
+  const Epsilon_test t = orientation_2_epsilon_test<T>(px, py, qx, qy, rx, ry);
+  if (t.decided) [[likely]]  // the only branch, well predicted on usual input
+    return t.sign;
+  return exactly_degenerate_2(px, py, qx, qy, rx, ry) ? Certified_sign::zero : Certified_sign::uncertain;
 }
 
 /// Epsilon-tested sign of orientation_3 in T.
 template <class T>
 inline Certified_sign filtered_orientation_3(T px, T py, T pz, T qx, T qy, T qz, T rx, T ry,
                                              T rz, T sx, T sy, T sz) {
-  return orientation_3_epsilon_test<T>(px, py, pz, qx, qy, qz, rx, ry, rz, sx, sy, sz).answer();
+  const Epsilon_test t = orientation_3_epsilon_test<T>(px, py, pz, qx, qy, qz, rx, ry, rz, sx, sy, sz);
+  if (t.decided) [[likely]]
+    return t.sign;
+  return exactly_degenerate_3(px, py, pz, qx, qy, qz, rx, ry, rz, sx, sy, sz) ? Certified_sign::zero
+                                                                              : Certified_sign::uncertain;
 }
 
 }  // namespace relgeo::internal

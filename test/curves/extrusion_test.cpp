@@ -9,6 +9,7 @@
 
 #include "relgeo/curves.h"
 #include "relgeo/kernel.h"
+#include "support/fp_environments.h"
 
 namespace relgeo::test {
 namespace {
@@ -303,6 +304,33 @@ TEST(Extrusion, DegenerateContours) {
       EXPECT_EQ(p.verdict, Extrusion_verdict::refused);
     }
   EXPECT_TRUE(found);
+}
+
+}  // namespace
+}  // namespace relgeo::test
+
+namespace relgeo::test {
+namespace {
+
+// The verdict and the margins (rounded in hardware) do not depend on the
+// caller's floating-point environment: the checker establishes the default.
+TEST(Extrusion, SameReportInEveryFloatingPointEnvironment) {
+  const std::vector<Bezier_contour> contours{circle_contour(16), thin_rectangle_contour(1e-4), bow_tie_contour(),
+                                             looped_circle_contour(8)};
+  for (const auto& c : contours) {
+    const auto reference = check_extrusion<Failsafe_kernel<double>>(c);
+    for (const auto& s : test::non_default_fp_environments()) {
+      Extrusion_report r;
+      {
+        const test::Scoped_fp_environment environment(s);
+        r = check_extrusion<Failsafe_kernel<double>>(c);
+      }
+      EXPECT_EQ(r.verdict, reference.verdict) << s.name;
+      for (int k = 0; k < 3; ++k)
+        EXPECT_EQ(r.conditions[k].min_margin, reference.conditions[k].min_margin) << s.name << " condition " << k + 1;
+      EXPECT_EQ(r.max_hull_backward_error, reference.max_hull_backward_error) << s.name;
+    }
+  }
 }
 
 }  // namespace

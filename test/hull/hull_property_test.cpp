@@ -33,7 +33,7 @@ TEST(HullProperties, FortuneUnderFailsafeIsConvexAndWithinItsBound) {
     const auto r = graham_fortune<Failsafe_kernel<double>>(input);
     ASSERT_TRUE(r.ok());
     const auto b = hull_backward_error(input, r.indices);
-    ASSERT_TRUE(is_convex_position(points_at(input, r.indices))) << "seed " << seed;
+    ASSERT_TRUE(is_ccw_strictly_convex_polygon(points_at(input, r.indices))) << "seed " << seed;
     const auto bound = graham_fortune_backward_error_bound<Failsafe_kernel<double>>(input);
     ASSERT_TRUE(bound.has_value()) << "seed " << seed;
     ASSERT_LE(b.value, *bound) << "seed " << seed;
@@ -42,6 +42,36 @@ TEST(HullProperties, FortuneUnderFailsafeIsConvexAndWithinItsBound) {
   }
   std::printf("[ fortune/failsafe ] %llu sets: %zu with a nonzero certificate; largest certificate/bound = %.3g (seed %zu)\n",
               static_cast<unsigned long long>(cases), dropped, worst_ratio, worst_seed);
+  // Not vacuous: the fail-safe scan does drop points on these inputs, so the
+  // bound is checked on nonzero certificates (about two thirds of the sets).
+  EXPECT_GT(dropped, cases / 4);
+  EXPECT_GT(worst_ratio, 0.0);
+}
+
+TEST(HullProperties, FortuneUnderFailsafeFloatIsConvexAndWithinItsBound) {
+  // Float inputs (the near-degenerate sets rounded to float, a few ulps of
+  // float apart): the bound of the float kernel holds in float's own regime.
+  const std::uint64_t cases = case_count(20000);
+  std::size_t nonzero = 0, bounded = 0;
+  for (std::uint64_t seed = 0; seed < cases; ++seed) {
+    auto input = near_degenerate_points(seed + 31337, static_cast<int>(seed % 4));
+    std::vector<Point_2<float>> in_float;
+    for (auto& p : input) {
+      in_float.push_back({static_cast<float>(p.x), static_cast<float>(p.y)});
+      p = {in_float.back().x, in_float.back().y};
+    }
+    const auto r = graham_fortune<Failsafe_kernel<float>>(in_float);
+    ASSERT_TRUE(r.ok());
+    ASSERT_TRUE(is_ccw_strictly_convex_polygon(points_at(input, r.indices))) << "seed " << seed;
+    const auto bound = graham_fortune_backward_error_bound<Failsafe_kernel<float>>(input);
+    if (!bound) continue;  // coordinates below 2^-7 or tiny ones: out of float's regime
+    ++bounded;
+    const double b = hull_backward_error(input, r.indices).value;
+    ASSERT_LE(b, *bound) << "seed " << seed;
+    nonzero += b > 0;
+  }
+  EXPECT_GT(bounded, cases / 2);
+  EXPECT_GT(nonzero, 0u);
 }
 
 TEST(HullProperties, ExactPredicatesAlwaysGiveTheExactHull) {
@@ -114,11 +144,36 @@ TEST(HullPrefilter, SameExactHullAndFortuneStillWithinItsBound) {
     EXPECT_EQ(with.indices, graham_fortune<Filtered_exact_kernel>(input, {}, all_points).indices) << seed;
     EXPECT_EQ(with.indices, monotone_chain<Filtered_exact_kernel>(input).indices) << seed;
     const auto failsafe = graham_fortune<Failsafe_kernel<double>>(input);
-    ASSERT_TRUE(is_convex_position(points_at(input, failsafe.indices))) << seed;
+    ASSERT_TRUE(is_ccw_strictly_convex_polygon(points_at(input, failsafe.indices))) << seed;
     const auto bound = graham_fortune_backward_error_bound<Failsafe_kernel<double>>(input);
     ASSERT_TRUE(bound.has_value());
     EXPECT_LE(hull_backward_error(input, failsafe.indices).value, *bound) << seed;
   }
+}
+
+TEST(HullProperties, AnUndecidableOrderIsAFailureNotAGuess) {
+  // Points of wide intervals: the interval kernel cannot order (0..2, 0) and
+  // (1..3, 1), so no sorting algorithm can certify a hull. Before, the
+  // uncertain comparison counted as "equal" and a vertex was dropped as a
+  // duplicate (and the comparator was not a strict weak ordering).
+  using P = Interval_kernel::Point_2;
+  const std::vector<P> points{{Interval(0, 2), Interval(0)}, {Interval(1, 3), Interval(1)},
+                              {Interval(10), Interval(0)}, {Interval(5), Interval(8)}};
+  for (const auto& r : {graham_fortune<Interval_kernel>(points), monotone_chain<Interval_kernel>(points)}) {
+    EXPECT_FALSE(r.ok());
+    EXPECT_EQ(r.failure, "undecidable-order");
+    EXPECT_TRUE(r.indices.empty());
+    EXPECT_GT(r.uncertain_answers, 0u);
+  }
+  // Collinear as far as the kernel can tell: graham_incremental sorts too.
+  const std::vector<P> line{{Interval(0, 2), Interval(0)}, {Interval(1, 3), Interval(0)}, {Interval(5), Interval(0)}};
+  const auto r = graham_incremental<Interval_kernel>(line);
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(r.failure, "undecidable-order");
+  // Point intervals (every double input) are ordered exactly: no failure.
+  const std::vector<P> exact{{Interval(0), Interval(0)}, {Interval(1), Interval(1)}, {Interval(10), Interval(0)},
+                             {Interval(5), Interval(8)}};
+  EXPECT_TRUE(graham_fortune<Interval_kernel>(exact).ok());
 }
 
 // Exact squared Hausdorff distance between the hulls of two point sets.

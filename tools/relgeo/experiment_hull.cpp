@@ -187,7 +187,7 @@ Section_report hull_section(const Experiment_context& ctx) {
       "Planar convex hulls: every algorithm under every kernel (cgal = CGAL::convex_hull_2, CGAL "
       "kernels only).\nInputs (point files in " + ctx.relative(input_dir) + "/):\n" + inputs_text +
       "\nstatus: exact = the exact hull, ok = another hull, FAILED = the algorithm reported a "
-      "failure;\n|hull| = computed/exact size; convex = output in convex position (exact check);\n"
+      "failure;\n|hull| = computed/exact size; convex = the output polygon, in its order, is simple, strictly convex and CCW (exact check);\n"
       "E = eq. (3.2), Hausdorff distance to the exact hull / M; backward error = certificate "
       "(relative move of the input making the output exact);\na-priori bound = "
       "graham_fortune_backward_error_bound (graham-fortune only; none = the kernel gives no "

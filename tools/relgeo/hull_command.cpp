@@ -41,6 +41,11 @@ int run_hull_command(const Hull_command_options& o, std::istream& in, std::ostre
         << "' reported " << e.run.failure << '\n';
     return exit_failure;
   }
+  if (!e.error.convex) {  // an invalid result, found by the exact check
+    err << "relgeo: failure: " << o.algorithm << " under kernel '" << o.kernel
+        << "' returned a polygon that is not simple, strictly convex and counterclockwise\n";
+    return exit_failure;
+  }
   return exit_success;
 }
 

@@ -151,8 +151,8 @@ std::string hull_report_text(std::string_view algorithm, const Kernel_info& kern
     const auto& p = input[r.indices[i]];
     kv("", std::to_string(r.indices[i]) + "  " + format_point_17(p.x, p.y));
   }
-  kv("convex", e.error.convex ? "yes (in convex position, exact check)"
-                              : "NO (a hull point lies inside the hull of the others)");
+  kv("convex", e.error.convex ? "yes (a simple, strictly convex, counterclockwise polygon; exact check)"
+                              : "NO (the polygon, in the order returned, is not simple, strictly convex and counterclockwise)");
   kv("error E", error_text(e.error.value) + "  (eq. 3.2: Hausdorff distance to the exact hull / M, M = " +
                     format_g(e.error.coordinate_bound, 17) + ")");
   std::string back = error_text(e.backward.value);

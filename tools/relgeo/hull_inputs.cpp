@@ -71,7 +71,7 @@ Hull_input kettner_construction_input(Kettner_failure failure, std::uint64_t bas
     if (failure == Kettner_failure::non_termination) {
       hit = !r.ok();
     } else if (r.ok()) {
-      const bool convex = is_convex_position(points_at(pts, r.indices));
+      const bool convex = is_ccw_strictly_convex_polygon(points_at(pts, r.indices));
       if (failure == Kettner_failure::non_convex) hit = !convex;
       else hit = convex && r.indices != monotone_chain<Filtered_exact_kernel>(pts).indices;
     }

@@ -26,8 +26,8 @@ Hull_input classroom_a1_input();
 
 /// What Kettner et al.'s construction searches for.
 enum class Kettner_failure {
-  lost_point,       ///< output in convex position, but not the exact hull (an extreme point lost)
-  non_convex,       ///< output not in convex position
+  lost_point,       ///< output a convex polygon, but not the exact hull (an extreme point lost)
+  non_convex,       ///< output not a simple, strictly convex, counterclockwise polygon
   non_termination,  ///< graham_incremental reports non-termination
 };
 

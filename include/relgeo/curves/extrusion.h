@@ -89,6 +89,7 @@
 #include <string_view>
 #include <vector>
 
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/errors.h"
 #include "relgeo/curves/contour.h"
 #include "relgeo/curves/convex_separation.h"
@@ -312,6 +313,10 @@ Extrusion_report check_extrusion(const Bezier_contour& contour, const Extrusion_
                                  const K& k = K{}, const Algorithm& hull = Algorithm{}) {
   using internal::add_up;
   using internal::mul_up;
+  // Margins are rounded in hardware: whatever the caller's environment, in
+  // round to nearest without FTZ/DAZ (the same for every kernel: a naive one
+  // can only downgrade the verdict, never make it depend on the caller).
+  const Default_fp_environment environment;
   const double delta = options.relative_uncertainty, delta_abs = options.absolute_uncertainty;
   if (!(delta >= 0) || !std::isfinite(delta) || !(delta_abs >= 0) || !std::isfinite(delta_abs) ||
       !(options.rotation_error >= 0))

@@ -10,9 +10,12 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <string>
 #include <vector>
 
+#include "relgeo/core/errors.h"
 #include "relgeo/hull/monotone_chain.h"
+#include "relgeo/kernel/floating_point.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/kernel/point.h"
 
@@ -48,31 +51,87 @@ inline mpq_class squared_distance_to_segment(const Point_2<double>& p, const Poi
 
 }  // namespace internal
 
+namespace internal {
+
+/// Throws Non_finite_input naming `who` when a point has a NaN or infinite coordinate.
+inline void require_finite(std::span<const Point_2<double>> points, const char* who) {
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!all_finite(points[i].x, points[i].y))
+      throw Non_finite_input(std::string(who) + ": point " + std::to_string(i) +
+                             " has a NaN or infinite coordinate");
+}
+
+/// The exact orientation of three finite points (never `uncertain`: the
+/// filtered kernel decides every finite case; a non-finite one throws).
+inline Certified_sign exact_orientation(const Point_2<double>& a, const Point_2<double>& b,
+                                        const Point_2<double>& c) {
+  const Certified_sign s = Filtered_exact_kernel{}.orientation_2_object()(a, b, c);
+  if (!is_certain(s)) throw Non_finite_input("exact geometry: a coordinate is NaN or infinite");
+  return s;
+}
+
+/// a < b lexicographically (finite points: exact).
+inline bool lexicographically_less(const Point_2<double>& a, const Point_2<double>& b) {
+  return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+
+}  // namespace internal
+
+/// \brief Whether the cyclic sequence `poly`, read as the polygon it lists, is
+/// simple, strictly convex at every vertex and winds once counterclockwise
+/// (CGAL's is_ccw_strongly_convex_2), decided exactly.
+///
+/// A polygon all of whose turns are strict left turns (each in (0, pi)) is
+/// convex and simple iff its edge direction turns by 2 pi in all, i.e. iff it
+/// has exactly one lexicographic local minimum (a polygon winding k times has
+/// k). So the right vertex set in a wrong order is not convex. Degenerate
+/// hulls count as convex: no vertex, one vertex, or two different vertices (a
+/// segment). \throws Non_finite_input for a NaN or infinite coordinate.
+inline bool is_ccw_strictly_convex_polygon(std::span<const Point_2<double>> poly) {
+  internal::require_finite(poly, "is_ccw_strictly_convex_polygon");
+  const std::size_t h = poly.size();
+  if (h <= 1) return true;
+  if (h == 2) return !(poly[0] == poly[1]);
+  std::size_t local_minima = 0;
+  for (std::size_t i = 0; i < h; ++i) {
+    const Point_2<double>& a = poly[(i + h - 1) % h];
+    const Point_2<double>& b = poly[i];
+    const Point_2<double>& c = poly[(i + 1) % h];
+    if (internal::exact_orientation(a, b, c) != Certified_sign::positive) return false;
+    local_minima += internal::lexicographically_less(b, a) && internal::lexicographically_less(b, c);
+  }
+  return local_minima == 1;
+}
+
 /// Exact location of p with respect to the strictly convex counterclockwise
 /// polygon `poly` (1 or 2 vertices: a point or a segment, whose points are
 /// `boundary`). O(log h) exact orientation tests.
+/// \pre is_ccw_strictly_convex_polygon(poly).
+/// \throws Non_finite_input when p or a vertex it meets is not finite.
 inline Polygon_side locate(std::span<const Point_2<double>> poly, const Point_2<double>& p) {
-  const Filtered_exact_kernel k;
-  const auto o = k.orientation_2_object();
+  using internal::exact_orientation;
+  if (!all_finite(p.x, p.y)) throw Non_finite_input("locate: the point has a NaN or infinite coordinate");
   const std::size_t h = poly.size();
   if (h == 0) return Polygon_side::outside;
+  if (h <= 2) internal::require_finite(poly, "locate");
   if (h == 1) return poly[0] == p ? Polygon_side::boundary : Polygon_side::outside;
   if (h == 2) {
-    if (o(poly[0], poly[1], p) != Certified_sign::zero) return Polygon_side::outside;
+    if (exact_orientation(poly[0], poly[1], p) != Certified_sign::zero) return Polygon_side::outside;
     const bool between = std::min(poly[0].x, poly[1].x) <= p.x && p.x <= std::max(poly[0].x, poly[1].x) &&
                          std::min(poly[0].y, poly[1].y) <= p.y && p.y <= std::max(poly[0].y, poly[1].y);
     return between ? Polygon_side::boundary : Polygon_side::outside;
   }
   // Fan from poly[0]: find the wedge (poly[i], poly[i+1]) containing p.
-  const Certified_sign first = o(poly[0], poly[1], p), last = o(poly[0], poly[h - 1], p);
+  const Certified_sign first = exact_orientation(poly[0], poly[1], p);
+  const Certified_sign last = exact_orientation(poly[0], poly[h - 1], p);
   if (first == Certified_sign::negative || last == Certified_sign::positive) return Polygon_side::outside;
   std::size_t lo = 1, hi = h - 1;  // invariant: p left of or on poly0->poly[lo], right of or on poly0->poly[hi]
   while (hi - lo > 1) {
     const std::size_t mid = (lo + hi) / 2;
-    if (o(poly[0], poly[mid], p) == Certified_sign::negative) hi = mid;
+    if (exact_orientation(poly[0], poly[mid], p) == Certified_sign::negative) hi = mid;
     else lo = mid;
   }
-  const Certified_sign edge = o(poly[lo], poly[hi], p);
+  const Certified_sign edge = exact_orientation(poly[lo], poly[hi], p);
   if (edge == Certified_sign::negative) return Polygon_side::outside;
   if (edge == Certified_sign::zero) return Polygon_side::boundary;
   if ((lo == 1 && first == Certified_sign::zero) || (hi == h - 1 && last == Certified_sign::zero))
@@ -111,6 +170,8 @@ inline double sqrt_ratio_up(const mpq_class& q, double scale = 1.0) {
 /// from one to the other is attained at a vertex.
 inline double hausdorff_distance(std::span<const Point_2<double>> a_hull,
                                  std::span<const Point_2<double>> b_hull, double scale = 1.0) {
+  internal::require_finite(a_hull, "hausdorff_distance");
+  internal::require_finite(b_hull, "hausdorff_distance");
   if (a_hull.empty() != b_hull.empty()) return std::numeric_limits<double>::infinity();
   if (a_hull.empty()) return 0.0;
   mpq_class worst = 0;

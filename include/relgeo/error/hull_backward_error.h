@@ -22,7 +22,8 @@ namespace relgeo {
 /// A backward-error certificate of a computed hull Y.
 struct Hull_backward_error {
   /// Relative perturbation (distance / M, rounded upward) after which Y is the
-  /// exact hull of the perturbed input; +inf when Y is not in convex position.
+  /// exact hull of the perturbed input; +inf when the polygon Y is not simple,
+  /// strictly convex and counterclockwise.
   double value = 0;
   /// The explicit perturbation: these input points move to their nearest
   /// point of conv(Y); all others stay.
@@ -34,19 +35,24 @@ struct Hull_backward_error {
 /// \brief Backward-error certificate of the hull `hull_indices` of `input`
 /// (what none of the peers offer).
 ///
-/// If Y is in convex position, moving every input point that lies outside
-/// conv(Y) to its nearest point of conv(Y) makes conv(Y) the exact hull of the
-/// perturbed input, with Y its vertices (a vertex of Y that is collinear with
-/// its neighbours becomes a vertex after an arbitrarily small outward move, so
-/// the value is then an infimum). The value, max distance / M, is therefore an
-/// upper bound of the smallest relative perturbation; it is 0 exactly when Y
-/// is the exact hull. If Y is not in convex position the value is +inf.
+/// Y is the polygon the indices list, in that order. If it is simple,
+/// strictly convex and counterclockwise (is_ccw_strictly_convex_polygon),
+/// moving every input point that lies outside it to its nearest point of Y
+/// makes Y the exact hull of the perturbed input. The value, max distance /
+/// M, is therefore an upper bound of the smallest relative perturbation; it
+/// is 0 exactly when Y is the exact hull. Otherwise (a self-intersecting,
+/// non-convex or clockwise polygon, also when its vertex set is right) the
+/// value is +inf: no perturbation that keeps the points where a convex
+/// polygon needs them is searched for, the polygon is simply not a hull.
 /// Exact predicates and distances; O(n log h) plus O(h) per point outside.
+/// \throws Non_finite_input for a NaN or infinite input coordinate.
 inline Hull_backward_error hull_backward_error(std::span<const Point_2<double>> input,
                                                std::span<const std::size_t> hull_indices) {
+  const Default_fp_environment environment;
+  internal::require_finite(input, "hull_backward_error");
   Hull_backward_error b;
   const std::vector<Point_2<double>> y = points_at(input, hull_indices);
-  if (!is_convex_position(y)) {
+  if (!is_ccw_strictly_convex_polygon(y)) {
     b.value = std::numeric_limits<double>::infinity();
     return b;
   }
@@ -54,12 +60,11 @@ inline Hull_backward_error hull_backward_error(std::span<const Point_2<double>> 
     b.value = input.empty() ? 0.0 : std::numeric_limits<double>::infinity();
     return b;
   }
-  const std::vector<Point_2<double>> hull = exact_hull(y);
   mpq_class worst = 0;
   for (std::size_t i = 0; i < input.size(); ++i) {
-    if (locate(hull, input[i]) != Polygon_side::outside) continue;
+    if (locate(y, input[i]) != Polygon_side::outside) continue;
     b.moved_points.push_back(i);
-    mpq_class d = squared_distance(hull, input[i]);
+    mpq_class d = squared_distance(y, input[i]);
     if (!b.worst_point || d > worst) worst = std::move(d), b.worst_point = i;
   }
   const double m = coordinate_bound(input);
@@ -83,8 +88,11 @@ inline Hull_backward_error hull_backward_error(std::span<const Point_2<double>> 
 ///       bound = 4 n eps (1+u)^2  (+ u_T when T is narrower than double: the
 ///       input is rounded to T first).
 ///   The derivation needs the filter to answer within its proven regime: every
-///   nonzero |coordinate| in [2^53 low_2, high_2 / 2] of T's filter constants
-///   (for double about [2^-415, 2^509]); outside that the bound is empty.
+///   nonzero |coordinate| in [2^p low_2, high_2 / 2] of T's filter constants,
+///   p the significand bits of T, so that two different coordinates differ by
+///   at least low_2 (for double about [2^-397, 2^509], for float [2^-7,
+///   2^61]); outside that the bound is empty. (The scan runs in the default
+///   floating-point environment, which graham_fortune establishes.)
 /// * Other kernels (naive, interval, MPFR): empty.
 template <class K>
 std::optional<double> graham_fortune_backward_error_bound(std::span<const Point_2<double>> input) {
@@ -96,7 +104,7 @@ std::optional<double> graham_fortune_backward_error_bound(std::span<const Point_
     } else {
       using T = typename K::FT;
       using C = internal::Orientation_filter_constants<T>;
-      const long double lo = static_cast<long double>(C::low_2) * 0x1p53L;
+      const long double lo = std::ldexp(static_cast<long double>(C::low_2), C::digits);
       const long double hi = static_cast<long double>(C::high_2) / 2;
       for (const auto& p : input)
         for (double v : {p.x, p.y})

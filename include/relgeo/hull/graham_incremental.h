@@ -46,6 +46,7 @@ Hull_result<typename K::Point_2> graham_incremental(std::span<const typename K::
             points, [](auto doubles, const auto& kernel) { return graham_incremental(doubles, kernel); }))
       return std::move(*r);
   using Point = typename K::Point_2;
+  const Default_fp_environment_if<K::is_certified> environment;
   internal::require_finite_points<Point>(points, "graham_incremental");
   Hull_result<Point> r;
   const auto orientation = k.orientation_2_object();
@@ -69,6 +70,11 @@ Hull_result<typename K::Point_2> graham_incremental(std::span<const typename K::
   }
   if (third == n) {  // one distinct point, or (as far as K can tell) collinear
     const internal::Sorted_input<K> sorted(points, k, &r.uncertain_answers);
+    if (sorted.undecidable()) {
+      r.status = Hull_status::failed;
+      r.failure = internal::undecidable_order_failure;
+      return r;
+    }
     std::vector<std::size_t> ends;
     if (sorted.size() >= 1) ends.push_back(0);
     if (sorted.size() >= 2) ends.push_back(sorted.size() - 1);

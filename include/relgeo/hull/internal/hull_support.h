@@ -20,6 +20,7 @@
 #include <boost/sort/pdqsort/pdqsort.hpp>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/hull/hull_result.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
@@ -230,8 +231,12 @@ std::optional<Point_bitmap> interior_prefilter(std::span<const Point> points, co
 /// sort is most of a hull's time and the copy its memory: comparing through
 /// the kernel's certified functor on scattered indices was 2-3x slower, and
 /// (point, index) records took 1.5x the input (benchmark/hull). Other point
-/// types are sorted as indices through the kernel's compare_xy_2; an
-/// `uncertain` comparison counts as `equal` and is reported through *undecided.
+/// types are sorted as indices through the kernel's compare_xy_2. An
+/// `uncertain` comparison (points of wide intervals, say) leaves the order
+/// undecided: the sort stops at once (a comparator that guesses would not be
+/// a strict weak ordering, and Fortune's argument needs sorted input),
+/// undecidable() is set and the sequence is empty; it is counted in
+/// *undecided.
 template <class K>
 class Sorted_input {
   using Point = typename K::Point_2;
@@ -261,27 +266,32 @@ class Sorted_input {
       sorted_.erase(std::unique(sorted_.begin(), sorted_.end()), sorted_.end());
     } else {
       const auto compare = k.compare_xy_2_object();
+      struct Undecidable {};
+      auto decided = [&](std::size_t a, std::size_t b) {
+        const Certified_sign s = compare(points[a], points[b]);
+        if (!is_certain(s)) throw Undecidable{};
+        return s;
+      };
       for (std::size_t i = 0; i < points.size(); ++i)
         if (!keep || keep->test(i)) order_.push_back(i);
-      std::size_t unsure = 0;
-      std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
-        const Certified_sign s = compare(points[a], points[b]);
-        unsure += (s == Certified_sign::uncertain);
-        return s == Certified_sign::negative;
-      });
-      std::size_t kept = 0;
-      for (std::size_t i : order_) {
-        if (kept > 0) {
-          const Certified_sign s = compare(points[order_[kept - 1]], points[i]);
-          unsure += (s == Certified_sign::uncertain);
-          if (s == Certified_sign::zero || s == Certified_sign::uncertain) continue;
-        }
-        order_[kept++] = i;
+      try {
+        std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
+          return decided(a, b) == Certified_sign::negative;
+        });
+        std::size_t kept = 0;
+        for (std::size_t i : order_)
+          if (kept == 0 || decided(order_[kept - 1], i) != Certified_sign::zero) order_[kept++] = i;
+        order_.resize(kept);
+      } catch (const Undecidable&) {
+        undecidable_ = true;
+        order_.clear();
+        if (undecided) ++*undecided;
       }
-      order_.resize(kept);
-      if (undecided) *undecided += unsure;
     }
   }
+
+  /// The kernel could not order two of the points (nothing is sorted then).
+  bool undecidable() const { return undecidable_; }
 
   std::size_t size() const {
     if constexpr (direct) return sorted_.size();
@@ -332,7 +342,11 @@ class Sorted_input {
   std::span<const Point> input_;
   std::vector<Point> sorted_;        // direct comparison
   std::vector<std::size_t> order_;   // through the kernel
+  bool undecidable_ = false;
 };
+
+/// The failure a hull algorithm reports when the kernel cannot order its input.
+inline constexpr const char* undecidable_order_failure = "undecidable-order";
 
 /// Fills result.points from result.indices.
 template <class Point>
@@ -385,11 +399,17 @@ template <class K, class Scan>
 Hull_result<typename K::Point_2> sorted_hull(std::span<const typename K::Point_2> points, const K& k,
                                              const Hull_options& options, const char* who, Scan&& scan) {
   using Point = typename K::Point_2;
+  const Default_fp_environment_if<K::is_certified> environment;
   require_finite_points<Point>(points, who);
   Hull_result<Point> r;
   std::optional<Point_bitmap> kept;
   if (options.discard_interior) kept = interior_prefilter(points, k, r);
   const Sorted_input<K> sorted(points, k, &r.uncertain_answers, kept ? &*kept : nullptr);
+  if (sorted.undecidable()) {
+    r.status = Hull_status::failed;
+    r.failure = undecidable_order_failure;
+    return r;
+  }
   std::vector<std::size_t> chain;  // positions in `sorted`
   if (sorted.size() <= 2) {
     for (std::size_t i = 0; i < sorted.size(); ++i) chain.push_back(i);
@@ -402,7 +422,9 @@ Hull_result<typename K::Point_2> sorted_hull(std::span<const typename K::Point_2
 }
 
 /// Rotates a cyclic index sequence to start at its lexicographically smallest
-/// point (ties by index), as the output convention asks.
+/// point (ties by index), as the output convention asks. Only the start of
+/// the cycle depends on it: an `uncertain` comparison keeps the earlier
+/// candidate.
 template <class K>
 void rotate_to_smallest(std::vector<std::size_t>& cycle, std::span<const typename K::Point_2> points,
                         const K& k) {

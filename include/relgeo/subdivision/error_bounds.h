@@ -43,11 +43,18 @@
 //    theta_j, planes through q_j, reflected below), in double: *not* a
 //    bound; tests and `relgeo experiment` count where it fails.
 //
-// Soundness: the enclosures are exact statements about the kernel's numbers:
-// under Exact_kernel (and Interval_kernel, reading lower.inf(), upper.sup())
-// they are rigorous bounds for the exact limit surface of the given control
-// mesh; under double kernels they carry the rounding errors of their
-// computation (relative ~1e-15, measured in the tests).
+// Soundness: the enclosures are exact statements about the kernel's numbers,
+// i.e. about the limit surface of the scheme with the kernel's weights:
+//  * Interval_kernel (reading lower.inf(), upper.sup(), and the distances):
+//    weights enclose Loop's at every valence and all arithmetic is outward,
+//    so these bound Loop's own limit surface of the given control mesh;
+//  * Exact_kernel: Loop's surface at valences 3, 4, 6 (and crease, corner,
+//    BLZ, Warren rules); at other valences the surface of the scheme whose
+//    beta is the rational value of a 256-bit cosine (within 2^-250 of
+//    Loop's), whose distance to Loop's surface is not bounded here;
+//  * double kernels: the rounding errors of their computation (relative
+//    ~1e-15, measured in the tests), not certified.
+// doc/subdivision.md, "What is certified".
 #pragma once
 
 #include <algorithm>
@@ -61,6 +68,7 @@
 #include <utility>
 #include <vector>
 
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/errors.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/box_spline.h"
@@ -300,7 +308,8 @@ struct Loop_limit_mesh_bounds {
   unsigned level = 0;
   Triangle_mesh<Point> refined;     ///< the control mesh refined `level` times
   Triangle_mesh<Point> limit_mesh;  ///< its limit mesh (same faces)
-  /// Per face: n = (q1 - q0) x (q2 - q0) and |n| (double).
+  /// Per face: n = (q1 - q0) x (q2 - q0) and |n| (double, rounded to nearest;
+  /// the distances of the bounds use |n| rounded outward).
   std::vector<Point_3<FT>> normal;
   std::vector<double> normal_length;
   /// Per face: the face is degenerate (n = 0; no bound computed).
@@ -351,6 +360,7 @@ class Loop_error_bounds {
 
   /// The limit mesh at `level` and its per-face bounds.
   Loop_limit_mesh_bounds<K> compute(const Mesh& control, unsigned level) const {
+    const Default_fp_environment environment;  // the bounds are rounded outward in hardware
     Loop_limit_mesh_bounds<K> r;
     r.level = level;
     Loop_subdivider<K> sub(options_, kernel_);
@@ -419,6 +429,7 @@ class Loop_error_bounds {
       r.degenerate[g] = 1;
       return;
     }
+    const Length_bounds length = length_bounds(nn);
     // The functionals: t, a, b, c = 1 - a - b, psi_j = n_j . (x - q_j).
     std::vector<Functional> phi;
     const auto affine = [&](const P3& dir) { return Functional{dir, FT(-dot(dir, q0))}; };
@@ -471,7 +482,7 @@ class Loop_error_bounds {
       }
     }
     const FT L = lo[0], U = hi[0];
-    r.basis_range[g] = make_bound(L, U, len);
+    r.basis_range[g] = make_bound(L, U, length);
     // Direct hulls of the 7 functionals (Bezier hulls of regular patches,
     // local subdivision of irregular ones).
     const bool need_direct = bounds_.direct || bounds_.tangent_ranges == Loop_bound_options::Tangent_ranges::direct;
@@ -491,7 +502,7 @@ class Loop_error_bounds {
           for (std::size_t k = 0; k < nphi; ++k) hp.values[i * nphi + k] = phi[k](cps[i]);
         internal::local_patch_ranges<K>(hp, w, bounds_.irregular_depth, bounds_.regular_depth, one_24_, one_16_, dlo, dhi, have);
       }
-      if (bounds_.direct) r.direct[g] = make_bound(dlo[0], dhi[0], len);
+      if (bounds_.direct) r.direct[g] = make_bound(dlo[0], dhi[0], length);
     }
     const bool aux_direct = bounds_.tangent_ranges == Loop_bound_options::Tangent_ranges::direct;
     const std::vector<FT>& alo = aux_direct ? dlo : lo;
@@ -523,7 +534,7 @@ class Loop_error_bounds {
     FT tu = U, tl = FT(-L);
     if (!internal::tent_maximum<FT, Tr>(upper, amin, bmin, s, tol, tu)) tu = U;
     if (!internal::tent_maximum<FT, Tr>(lower, amin, bmin, s, tol, tl)) tl = FT(-L);
-    r.tangent_plane[g] = make_bound(internal::max_of(L, FT(-tl)), internal::min_of(U, tu), len);
+    r.tangent_plane[g] = make_bound(internal::max_of(L, FT(-tl)), internal::min_of(U, tu), length);
     if (bounds_.thesis_estimate) r.thesis_estimate[g] = thesis(q0, q1, q2, nj, L, U, len);
   }
 
@@ -547,11 +558,26 @@ class Loop_error_bounds {
     return cache.emplace(depth, r).first->second;
   }
 
-  static Loop_face_bound<FT> make_bound(const FT& lo, const FT& hi, double len) {
+  // Lower and upper bound of |n| = sqrt(n . n), rounded outward (sqrt is
+  // correctly rounded, so one step out bounds it): from the ends of n . n,
+  // not from an approximation of it, so an interval n . n as wide as its
+  // value (a thin face) still gives bounds.
+  struct Length_bounds {
+    double lo, hi;
+  };
+  static Length_bounds length_bounds(const FT& nn) {
+    const double lo = internal::lower_double(nn), hi = internal::upper_double(nn);
+    return {lo > 0 ? std::nextafter(std::sqrt(lo), 0.0) : 0.0, std::nextafter(std::sqrt(hi), INFINITY)};
+  }
+
+  // The heights [lo, hi] as signed distances t |n|, rounded outward (a
+  // product rounded to nearest is within half an ulp, so one step out bounds
+  // it; for a negative height the larger length gives the lower distance).
+  static Loop_face_bound<FT> make_bound(const FT& lo, const FT& hi, const Length_bounds& len) {
     Loop_face_bound<FT> b{lo, hi, 0, 0};
-    const double ld = internal::lower_double(lo) * len, ud = internal::upper_double(hi) * len;
-    b.lower_distance = ld - std::abs(ld) * 0x1p-50;
-    b.upper_distance = ud + std::abs(ud) * 0x1p-50;
+    const double l = internal::lower_double(lo), u = internal::upper_double(hi);
+    b.lower_distance = std::nextafter(l * (l >= 0 ? len.lo : len.hi), -INFINITY);
+    b.upper_distance = std::nextafter(u * (u >= 0 ? len.hi : len.lo), INFINITY);
     return b;
   }
 

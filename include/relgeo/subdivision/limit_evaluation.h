@@ -49,6 +49,7 @@
 #include <utility>
 #include <vector>
 
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/errors.h"
 #include "relgeo/kernel/interval.h"
 #include "relgeo/kernel/mpfr_number.h"
@@ -793,6 +794,7 @@ class Loop_limit_surface {
 
   /// The limit surface point at (u, v) of face f.
   Point evaluate(Index f, double u, double v) const {
+    const Default_fp_environment_if<K::is_certified> environment;
     check(f, u, v);
     const Point_3<FT> p = kind_[f] != Loop_patch_kind::irregular ? evaluate_regular(f, FT(u), FT(v)) : irregular(f, u, v, false).position;
     return A::make(p.x, p.y, p.z);
@@ -800,6 +802,7 @@ class Loop_limit_surface {
 
   /// Position, partial derivatives and normal at (u, v) of face f.
   Loop_limit_jet<FT> evaluate_with_derivatives(Index f, double u, double v) const {
+    const Default_fp_environment_if<K::is_certified> environment;
     check(f, u, v);
     if (kind_[f] != Loop_patch_kind::irregular) {
       const auto j = evaluate_quartic_bezier_jet(bezier_patch_unchecked(f), FT(u), FT(v));
@@ -817,6 +820,7 @@ class Loop_limit_surface {
     if (v >= points_.size())
       throw Invalid_surface_parameter("Loop limit surface: vertex " + std::to_string(v) + " out of range");
     if (topology_.is_isolated(v)) return A::make(points_[v].x, points_[v].y, points_[v].z);
+    const Default_fp_environment_if<K::is_certified> environment;
     const auto vals = internal::exact_limit_values(topology_, rules_, weights_, v, 3, &points_[0].x);
     return A::make(vals[0], vals[1], vals[2]);
   }

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/errors.h"
 #include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/mesh/internal/point_access.h"
@@ -68,6 +69,7 @@ class Loop_subdivider {
 
   /// The mesh after `levels` refinement steps (levels = 0: a copy).
   Mesh refine(const Mesh& m, unsigned levels) {
+    const Default_fp_environment_if<K::is_certified> environment;
     check_coordinates(m);
     if (levels == 0) return m;
     Level lv = analyse(m), next;
@@ -84,6 +86,7 @@ class Loop_subdivider {
   /// The last refinement and the limit masks are fused in one pass, so no
   /// adjacency of the finest mesh is built.
   Mesh limit_mesh(const Mesh& m, unsigned levels) {
+    const Default_fp_environment_if<K::is_certified> environment;
     check_coordinates(m);
     if (levels == 0) {
       Mesh r = m;
@@ -101,6 +104,7 @@ class Loop_subdivider {
 
   /// The limit positions of the mesh's own vertices (stencils of loop_masks.h).
   std::vector<Point> limit_positions(const Mesh& m) {
+    const Default_fp_environment_if<K::is_certified> environment;
     check_coordinates(m);
     const Mesh_topology t = Mesh_topology::build(m);
     const Loop_features f = classify_loop_features(t, m.tags);

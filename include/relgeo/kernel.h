@@ -3,7 +3,7 @@
 // CGAL adapters).
 #pragma once
 
-#include "relgeo/kernel/certified_sign.h"
+#include "relgeo/core/certified_sign.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/failsafe_kernel.h"

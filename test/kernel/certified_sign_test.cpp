@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "relgeo/kernel/certified_sign.h"
+#include "relgeo/core/certified_sign.h"
 
 namespace relgeo {
 namespace {

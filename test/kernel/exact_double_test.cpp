@@ -8,7 +8,7 @@
 #include <random>
 
 #include "relgeo/kernel/exact_kernel.h"
-#include "relgeo/kernel/internal/binary_parts.h"
+#include "relgeo/core/dyadic.h"
 
 namespace relgeo {
 namespace {

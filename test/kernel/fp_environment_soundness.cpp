@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/floating_point.h"
 #include "support/exact_oracle.h"
 
 namespace relgeo::test {

@@ -8,7 +8,7 @@
 #include <limits>
 #include <random>
 
-#include "relgeo/kernel/interval.h"
+#include "relgeo/core/interval.h"
 
 namespace relgeo {
 namespace {

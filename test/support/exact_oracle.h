@@ -6,7 +6,7 @@
 #include <array>
 
 #include "relgeo/analysis/predicate_workloads.h"
-#include "relgeo/kernel/certified_sign.h"
+#include "relgeo/core/certified_sign.h"
 
 namespace relgeo::test {
 

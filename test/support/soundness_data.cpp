@@ -6,7 +6,7 @@
 #include <mutex>
 
 #include "exact_oracle.h"
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/floating_point.h"
 
 namespace relgeo::test {
 namespace {

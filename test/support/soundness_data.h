@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "relgeo/analysis/predicate_workloads.h"
-#include "relgeo/kernel/certified_sign.h"
+#include "relgeo/core/certified_sign.h"
 
 namespace relgeo::test {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "relgeo/kernel/certified_sign.h"
+#include "relgeo/core/certified_sign.h"
 
 namespace relgeo::tool {
 

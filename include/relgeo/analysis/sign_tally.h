@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
-#include "relgeo/kernel/certified_sign.h"
+#include "relgeo/core/certified_sign.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/analysis/predicate_workloads.h"

@@ -15,7 +15,7 @@
 
 #include "relgeo/core/errors.h"
 #include "relgeo/hull/monotone_chain.h"
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/kernel/point.h"
 

@@ -14,7 +14,7 @@
 #include "relgeo/error/convex_polygon.h"
 #include "relgeo/error/hull_error.h"
 #include "relgeo/kernel/concepts.h"
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
 
 namespace relgeo {

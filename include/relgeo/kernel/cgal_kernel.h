@@ -14,8 +14,8 @@
 
 #include "relgeo/core/errors.h"
 #include "relgeo/core/fp_environment.h"
-#include "relgeo/kernel/certified_sign.h"
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/certified_sign.h"
+#include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
 
 namespace CGAL {

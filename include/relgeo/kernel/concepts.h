@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "relgeo/kernel/certified_sign.h"
+#include "relgeo/core/certified_sign.h"
 
 namespace relgeo {
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "relgeo/core/errors.h"
-#include "relgeo/kernel/internal/binary_parts.h"
+#include "relgeo/core/dyadic.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/kernel_base.h"
 
@@ -36,7 +36,7 @@ class Exact_kernel : public internal::Kernel_base<Exact_kernel, mpq_class> {
     if (!std::isfinite(v)) throw Non_finite_input("exact kernel: coordinate is NaN or infinite");
     // Exact (every finite double is a dyadic rational), from the bits: the
     // same in every floating-point environment.
-    return internal::exact_rational(v);
+    return exact_rational(v);
   }
   static Certified_sign compare_ft(const FT& a, const FT& b) { return sign_of(cmp(a, b)); }
 

@@ -6,7 +6,7 @@
 #include <type_traits>
 
 #include "relgeo/core/fp_environment.h"
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/kernel_base.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
 

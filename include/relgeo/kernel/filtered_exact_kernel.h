@@ -8,13 +8,13 @@
 #include <string>
 
 #include "relgeo/core/fp_environment.h"
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/exact_dyadic.h"
 #include "relgeo/kernel/internal/expansion_orientation.h"
 #include "relgeo/kernel/internal/kernel_base.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
-#include "relgeo/kernel/interval.h"
+#include "relgeo/core/interval.h"
 
 namespace relgeo {
 

@@ -6,10 +6,10 @@
 #include <string>
 
 #include "relgeo/core/fp_environment.h"
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/kernel_base.h"
-#include "relgeo/kernel/interval.h"
+#include "relgeo/core/interval.h"
 
 namespace relgeo {
 

@@ -8,7 +8,7 @@
 
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
-#include "relgeo/kernel/interval.h"
+#include "relgeo/core/interval.h"
 #include "relgeo/kernel/interval_kernel.h"
 #include "relgeo/kernel/mpfr_kernel.h"
 #include "relgeo/kernel/naive_kernel.h"

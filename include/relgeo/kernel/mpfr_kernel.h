@@ -6,11 +6,11 @@
 #include <string>
 
 #include "relgeo/core/errors.h"
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/kernel_base.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
-#include "relgeo/kernel/mpfr_number.h"
+#include "relgeo/core/mpfr_number.h"
 
 namespace relgeo {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <type_traits>
 
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/kernel_base.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"

@@ -4,7 +4,7 @@
 // error measures (exact conversion to rationals, correctly rounded
 // conversion from rationals).
 //
-// Mpfr_number (relgeo/kernel/mpfr_number.h) offers +, -, *, /, unary -, ==,
+// Mpfr_number (relgeo/core/mpfr_number.h) offers +, -, *, /, unary -, ==,
 // < and >; Eigen's expressions and LU decompositions also need compound
 // assignment, <=, >=, abs and a few constants. They are supplied here as free
 // functions in namespace relgeo (found by argument-dependent lookup), so the
@@ -23,7 +23,7 @@
 
 #include "relgeo/core/errors.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
-#include "relgeo/kernel/mpfr_number.h"
+#include "relgeo/core/mpfr_number.h"
 
 namespace relgeo {
 

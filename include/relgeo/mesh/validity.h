@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "relgeo/kernel/certified_sign.h"
+#include "relgeo/core/certified_sign.h"
 #include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"

@@ -51,8 +51,8 @@
 
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/errors.h"
-#include "relgeo/kernel/interval.h"
-#include "relgeo/kernel/mpfr_number.h"
+#include "relgeo/core/interval.h"
+#include "relgeo/core/mpfr_number.h"
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/mesh_topology.h"

@@ -46,8 +46,8 @@
 #include <type_traits>
 
 #include "relgeo/core/errors.h"
-#include "relgeo/kernel/interval.h"
-#include "relgeo/kernel/mpfr_number.h"
+#include "relgeo/core/interval.h"
+#include "relgeo/core/mpfr_number.h"
 
 namespace relgeo {
 

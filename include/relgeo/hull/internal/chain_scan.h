@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "relgeo/hull/hull_result.h"
-#include "relgeo/kernel/certified_sign.h"
+#include "relgeo/core/certified_sign.h"
 
 namespace relgeo::internal {
 

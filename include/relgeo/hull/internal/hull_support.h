@@ -50,7 +50,7 @@ void require_finite_points(std::span<const Point> points, const char* who) {
     bool finite = true;
     if constexpr (std::is_floating_point_v<decltype(x)> ||
                   requires { x.inf(); x.sup(); })
-      finite = is_finite_value(x) && is_finite_value(y);
+      finite = is_finite_number(x) && is_finite_number(y);
     if (!finite)
       throw Non_finite_input(std::string(who) + ": point " + std::to_string(i) +
                              " has a NaN or infinite coordinate");

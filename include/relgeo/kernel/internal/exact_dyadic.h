@@ -15,8 +15,8 @@
 #include <array>
 #include <climits>
 
-#include "relgeo/kernel/certified_sign.h"
-#include "relgeo/kernel/internal/binary_parts.h"
+#include "relgeo/core/certified_sign.h"
+#include "relgeo/core/dyadic.h"
 
 namespace relgeo::internal {
 

@@ -15,8 +15,8 @@
 #include <cmath>
 #include <optional>
 
-#include "relgeo/kernel/certified_sign.h"
-#include "relgeo/kernel/internal/error_free.h"
+#include "relgeo/core/certified_sign.h"
+#include "relgeo/core/internal/error_free.h"
 
 namespace relgeo::internal {
 

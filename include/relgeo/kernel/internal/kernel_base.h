@@ -18,53 +18,13 @@
 #include <span>
 
 #include "relgeo/core/errors.h"
-#include "relgeo/kernel/certified_sign.h"
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/certified_sign.h"
+#include "relgeo/core/floating_point.h"
+#include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
 #include "relgeo/kernel/point.h"
 
 namespace relgeo::internal {
-
-/// Whether a coordinate is a finite number (exact and MPFR coordinates built
-/// by relgeo always are: their construction refuses non-finite doubles).
-template <class FT>
-bool is_finite_value(const FT& v) {
-  if constexpr (std::is_floating_point_v<FT>) return std::isfinite(v);
-  else if constexpr (requires { v.inf(); v.sup(); }) return std::isfinite(v.inf()) && std::isfinite(v.sup());
-  else return true;
-}
-
-/// Certified comparison of two IEEE values: `uncertain` when either is NaN or
-/// infinite. Float and double are compared on their bits (ordered as
-/// integers), because a comparison instruction reads two different subnormals
-/// as equal under denormals-are-zero (core/fp_environment.h).
-template <class T>
-inline Certified_sign compare_certified(T a, T b) {
-  if (!all_finite(a, b)) return Certified_sign::uncertain;
-  if constexpr (sizeof(T) == 8 || sizeof(T) == 4) {
-    if (same_value(a, b)) return Certified_sign::zero;  // also +0 and -0
-    using Int = std::conditional_t<sizeof(T) == 8, std::int64_t, std::int32_t>;
-    constexpr Int magnitude = std::numeric_limits<Int>::max();
-    // Sign-magnitude bits to an order-preserving two's complement key.
-    const auto key = [](T v) {
-      const Int i = std::bit_cast<Int>(v);
-      return i ^ ((i >> (8 * sizeof(Int) - 1)) & magnitude);
-    };
-    return key(a) < key(b) ? Certified_sign::negative : Certified_sign::positive;
-  } else if constexpr (std::numeric_limits<T>::digits == 64) {
-    // x87 long double, on its bits as well (see same_value): finite values
-    // order as (exponent, significand), reversed for negative ones.
-    if (same_value(a, b)) return Certified_sign::zero;
-    const X87_parts x = x87_parts(a), y = x87_parts(b);
-    const bool x_negative = x.sign && x.significand != 0, y_negative = y.sign && y.significand != 0;
-    if (x_negative != y_negative) return x_negative ? Certified_sign::negative : Certified_sign::positive;
-    const bool smaller_magnitude = x.exponent != y.exponent ? x.exponent < y.exponent : x.significand < y.significand;
-    return smaller_magnitude != x_negative ? Certified_sign::negative : Certified_sign::positive;
-  } else {
-    if (a < b) return Certified_sign::negative;
-    return b < a ? Certified_sign::positive : Certified_sign::zero;
-  }
-}
 
 template <class Derived, class FT_>
 class Kernel_base {
@@ -187,12 +147,12 @@ class Kernel_base {
   /// infinite coordinate, even where a projection or the first coordinate of a
   /// lexicographic comparison would not look at it (naive kernels just answer).
   static bool refuses(const Point_2& p) {
-    if constexpr (Derived::is_certified) return !(is_finite_value(p.x) && is_finite_value(p.y));
+    if constexpr (Derived::is_certified) return !(is_finite_number(p.x) && is_finite_number(p.y));
     else return false;
   }
   static bool refuses(const Point_3& p) {
     if constexpr (Derived::is_certified)
-      return !(is_finite_value(p.x) && is_finite_value(p.y) && is_finite_value(p.z));
+      return !(is_finite_number(p.x) && is_finite_number(p.y) && is_finite_number(p.z));
     else return false;
   }
   Construct_point_3 construct_point_3_object() const { return {}; }

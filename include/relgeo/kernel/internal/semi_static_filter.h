@@ -51,8 +51,8 @@
 #include <limits>
 #include <type_traits>
 
-#include "relgeo/kernel/certified_sign.h"
-#include "relgeo/kernel/floating_point.h"
+#include "relgeo/core/certified_sign.h"
+#include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/determinants.h"
 
 namespace relgeo::internal {
@@ -92,47 +92,6 @@ template <class T>
 inline Epsilon_test epsilon_test(T det, T bound, bool in_range) {
   // & rather than && keeps it branch-free.
   return {sign_of(det), static_cast<bool>(in_range & (std::abs(det) > bound))};
-}
-
-/// The fields of an x87 80-bit long double (sign, 15-bit biased exponent,
-/// 64-bit significand with its explicit integer bit).
-struct X87_parts {
-  bool sign;
-  unsigned exponent;
-  std::uint64_t significand;
-};
-template <class T>
-inline X87_parts x87_parts(T v) {
-  static_assert(std::numeric_limits<T>::digits == 64, "x87 extended precision");
-  unsigned char bytes[sizeof(T)];
-  std::memcpy(bytes, &v, sizeof(T));
-  std::uint64_t significand = 0;
-  std::uint16_t sign_exponent = 0;
-  std::memcpy(&significand, bytes, 8);
-  std::memcpy(&sign_exponent, bytes + 8, 2);
-  return {(sign_exponent >> 15) != 0, sign_exponent & 0x7FFFu, significand};
-}
-
-/// Whether a and b are the same value, decided on their bits (a comparison
-/// instruction would read two different subnormals as equal under DAZ).
-/// \pre a and b are finite.
-template <class T>
-inline bool same_value(T a, T b) {
-  if constexpr (sizeof(T) == 8 || sizeof(T) == 4) {
-    using Bits = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
-    constexpr Bits magnitude = ~Bits{0} >> 1;
-    const Bits x = std::bit_cast<Bits>(a), y = std::bit_cast<Bits>(b);
-    return x == y || ((x | y) & magnitude) == 0;  // equal, or +0 and -0
-  } else if constexpr (std::numeric_limits<T>::digits == 64) {
-    // x87 long double: its own arithmetic has no FTZ/DAZ, but the compiler may
-    // compare two long doubles converted from doubles as the doubles (SSE,
-    // where DAZ applies), so the value is read from its bits here too.
-    const X87_parts x = x87_parts(a), y = x87_parts(b);
-    return (x.sign == y.sign && x.exponent == y.exponent && x.significand == y.significand) ||
-           (x.significand == 0 && y.significand == 0);
-  } else {
-    return a == b;  // e.g. binary128 long double, in software
-  }
 }
 
 /// Whether every point has the same first, or the same second (or third)

@@ -1,8 +1,9 @@
-// relgeo/kernel/interval.h — closed intervals of doubles with outward rounding.
+// relgeo/core/interval.h — closed intervals of doubles with outward rounding.
 //
 // Each operation is evaluated in round-to-nearest and its result widened by
 // (at least) one ulp on the side of the exact value (found with TwoSum and
-// TwoProduct for sums and products of points; on both sides otherwise). This
+// TwoProduct for sums and products of points; on both sides otherwise: the
+// bounds of core/rounding.h). This
 // needs no change of the rounding mode (no fesetround, no -frounding-math) and
 // is sound because a correctly rounded result lies within one ulp of the exact
 // one, also under underflow (error <= half the smallest subnormal) and
@@ -23,8 +24,9 @@
 #include <cmath>
 #include <limits>
 
-#include "relgeo/kernel/certified_sign.h"
-#include "relgeo/kernel/internal/error_free.h"
+#include "relgeo/core/certified_sign.h"
+#include "relgeo/core/errors.h"
+#include "relgeo/core/rounding.h"
 
 namespace relgeo {
 
@@ -55,15 +57,18 @@ class Interval {
   friend Interval operator-(const Interval& a) { return {-a.hi_, -a.lo_}; }
 
   friend Interval operator+(const Interval& a, const Interval& b) {
-    return {sum_down(a.lo_, b.lo_), sum_up(a.hi_, b.hi_)};
+    return {add_bounds(a.lo_, b.lo_).lo, add_bounds(a.hi_, b.hi_).hi};
   }
   friend Interval operator-(const Interval& a, const Interval& b) {
-    return {sum_down(a.lo_, -b.hi_), sum_up(a.hi_, -b.lo_)};
+    return {add_bounds(a.lo_, -b.hi_).lo, add_bounds(a.hi_, -b.lo_).hi};
   }
   friend Interval operator*(const Interval& a, const Interval& b) {
     if (a.has_nan() || b.has_nan()) return nan();
     if (a.is_zero() || b.is_zero()) return {0.0, 0.0};  // exact, even against infinities
-    if (a.is_point() && b.is_point()) return point_product(a.lo_, b.lo_);
+    if (a.is_point() && b.is_point()) {
+      const Double_bounds p = mul_bounds(a.lo_, b.lo_);
+      return {p.lo, p.hi};
+    }
     const double c[4] = {a.lo_ * b.lo_, a.lo_ * b.hi_, a.hi_ * b.lo_, a.hi_ * b.hi_};
     double lo = c[0], hi = c[0];
     for (double v : c) {
@@ -71,65 +76,43 @@ class Interval {
       lo = std::min(lo, v);
       hi = std::max(hi, v);
     }
-    return {std::isfinite(lo) ? down(lo) : std::nextafter(lo, -kInf),
-            std::isfinite(hi) ? up(hi) : std::nextafter(hi, kInf)};
+    return {std::isfinite(lo) ? step_down(lo) : next_down(lo), std::isfinite(hi) ? step_up(hi) : next_up(hi)};
+  }
+  /// a / b. \pre b does not contain 0 (throws Precondition_violation).
+  /// Exact quotients of point intervals stay points.
+  friend Interval operator/(const Interval& a, const Interval& b) {
+    if (a.has_nan() || b.has_nan()) return nan();
+    if (!(b.lo_ > 0 || b.hi_ < 0)) throw Precondition_violation("Interval division: the divisor contains 0");
+    if (a.is_point() && b.is_point()) {
+      const Double_bounds q = div_bounds(a.lo_, b.lo_);
+      return {q.lo, q.hi};
+    }
+    const double c[4] = {a.lo_ / b.lo_, a.lo_ / b.hi_, a.hi_ / b.lo_, a.hi_ / b.hi_};
+    double lo = c[0], hi = c[0];
+    for (double v : c) lo = std::min(lo, v), hi = std::max(hi, v);
+    return {next_down(lo), next_up(hi)};
+  }
+  /// Enclosures of min(x, y) and max(x, y) for x in a, y in b.
+  friend Interval min(const Interval& a, const Interval& b) {
+    return {std::min(a.lo_, b.lo_), std::min(a.hi_, b.hi_)};
+  }
+  friend Interval max(const Interval& a, const Interval& b) {
+    return {std::max(a.lo_, b.lo_), std::max(a.hi_, b.hi_)};
   }
 
   Interval& operator+=(const Interval& b) { return *this = *this + b; }
   Interval& operator-=(const Interval& b) { return *this = *this - b; }
   Interval& operator*=(const Interval& b) { return *this = *this * b; }
+  Interval& operator/=(const Interval& b) { return *this = *this / b; }
 
   /// Certified comparison of two intervals: definite when they do not overlap
   /// (or are the same point).
   friend Certified_sign compare(const Interval& a, const Interval& b) { return (a - b).sign(); }
 
  private:
-  static constexpr double kInf = std::numeric_limits<double>::infinity();
   static constexpr Interval nan() {
     return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
   }
-  // At least one ulp outward, inline (libm's nextafter is a call): Rump,
-  // Zimmermann, Boldo, Melquiond, "Computing predecessor and successor in
-  // rounding to nearest", BIT 49 (2009): for finite x,
-  // fl(x + fl(phi |x| + eta)) >= succ(x) with phi = u (1 + 2u), eta = 2^-1074
-  // (one ulp more in rare cases, e.g. next to a power of two: still an outer
-  // bound). The caller handles infinities.
-  static double up(double x) {
-    const double c = 0x1p-53 * (1 + 0x1p-52) * std::abs(x) + 0x1p-1074;
-    return x + c;
-  }
-  static double down(double x) {
-    const double c = 0x1p-53 * (1 + 0x1p-52) * std::abs(x) + 0x1p-1074;
-    return x - c;
-  }
-  // Rounded sum x + y moved down (up) to a bound of the exact sum. The exact
-  // rounding error comes from Knuth's TwoSum, so an exact sum is not widened
-  // and an inexact one only on the side where the exact value lies.
-  static double sum_down(double x, double y) {
-    const auto [s, error] = internal::two_sum(x, y);
-    if (!std::isfinite(s)) [[unlikely]] return std::nextafter(s, -kInf);
-    const double d = down(s);
-    return error >= 0 ? s : d;
-  }
-  static double sum_up(double x, double y) {
-    const auto [s, error] = internal::two_sum(x, y);
-    if (!std::isfinite(s)) [[unlikely]] return std::nextafter(s, kInf);
-    const double u = up(s);
-    return error <= 0 ? s : u;
-  }
-  // Product of two nonzero doubles; product_error gives the exact rounding
-  // error while the product is far from underflow.
-  static Interval point_product(double x, double y) {
-    const double p = x * y;
-    if (!std::isfinite(p) || std::abs(p) < 0x1p-960) [[unlikely]]
-      return {std::nextafter(p, -kInf), std::nextafter(p, kInf)};
-    const double e = product_error(x, y, p);
-    const double lo = down(p), hi = up(p);
-    if (!std::isfinite(e)) [[unlikely]] return {lo, hi};  // no exact error: widen both sides
-    return {e >= 0 ? p : lo, e <= 0 ? p : hi};
-  }
-  static double product_error(double x, double y, double p) { return internal::two_product_error(x, y, p); }
-
   double lo_ = 0, hi_ = 0;
 };
 

@@ -1,4 +1,4 @@
-// relgeo/kernel/internal/error_free.h — error-free transformations of double
+// relgeo/core/internal/error_free.h — error-free transformations of double
 // arithmetic: a + b and a * b as a rounded result plus its exact error
 // (Knuth's TwoSum; Dekker's TwoProduct with Veltkamp's splitting, or one fma
 // where the target has it). Used by Interval's outward rounding and by the

@@ -1,4 +1,4 @@
-// relgeo/kernel/certified_sign.h — the answer type of every predicate.
+// relgeo/core/certified_sign.h — the answer type of every predicate.
 #pragma once
 
 #include <string_view>

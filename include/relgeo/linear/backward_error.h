@@ -125,13 +125,9 @@ class Linear_reference {
   template <class P>
   Linear_reference(const Dense_matrix<P>& a, const Dense_vector<P>& b,
                    const Linear_reference_options& options = {}) {
-    if (a.rows() != a.cols())
-      throw Invalid_input("linear system: the matrix is " + std::to_string(a.rows()) + " x " +
-                          std::to_string(a.cols()) + ", not square");
-    if (a.rows() == 0) throw Invalid_input("linear system: empty matrix", Error_code::empty_input);
-    if (b.size() != a.rows())
-      throw Invalid_input("linear system: the matrix has " + std::to_string(a.rows()) +
-                          " rows but the right-hand side has " + std::to_string(b.size()) + " entries");
+    internal::require_square(a, "linear system");
+    internal::require_not_empty(a, "linear system");
+    internal::require_rhs_rows(a, b, "linear system");
     a_ = to_rational_matrix(a);
     b_ = to_rational_vector(b);
     init(options);

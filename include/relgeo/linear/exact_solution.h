@@ -117,12 +117,8 @@ inline Dense_matrix<mpq_class> bareiss_solve(const Dense_matrix<mpq_class>& a,
 /// Complexity: O(n^3) operations on integers of O(n (bits per entry)) bits.
 inline Dense_vector<mpq_class> exact_solve(const Dense_matrix<mpq_class>& a,
                                            const Dense_vector<mpq_class>& b) {
-  if (a.rows() != a.cols())
-    throw Invalid_input("exact solve: the matrix is " + std::to_string(a.rows()) + " x " +
-                        std::to_string(a.cols()) + ", not square");
-  if (b.size() != a.rows())
-    throw Invalid_input("exact solve: the matrix has " + std::to_string(a.rows()) +
-                        " rows but the right-hand side has " + std::to_string(b.size()) + " entries");
+  internal::require_square(a, "exact solve");
+  internal::require_rhs_rows(a, b, "exact solve");
   Dense_matrix<mpq_class> bb(b.size(), 1);
   bb.col(0) = b;
   return internal::bareiss_solve(a, bb).col(0);

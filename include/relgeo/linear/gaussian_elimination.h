@@ -96,6 +96,33 @@ struct Lu_decomposition {
 
 namespace internal {
 
+/// The input checks of the area's entry points, each naming `who`:
+/// Invalid_input unless `a` is square, unless it is not empty (code
+/// empty_input), unless the right-hand side has a.rows() entries;
+/// Non_finite_input naming the first NaN or infinite entry.
+template <class Matrix>
+void require_square(const Matrix& a, const char* who) {
+  if (a.rows() != a.cols())
+    throw Invalid_input(std::string(who) + ": the matrix is " + std::to_string(a.rows()) + " x " +
+                        std::to_string(a.cols()) + ", not square");
+}
+template <class Matrix>
+void require_not_empty(const Matrix& a, const char* who) {
+  if (a.rows() == 0) throw Invalid_input(std::string(who) + ": empty matrix", Error_code::empty_input);
+}
+template <class Matrix, class Vector>
+void require_rhs_rows(const Matrix& a, const Vector& b, const char* who) {
+  if (b.size() != a.rows())
+    throw Invalid_input(std::string(who) + ": the matrix has " + std::to_string(a.rows()) +
+                        " rows but the right-hand side has " + std::to_string(b.size()) + " entries");
+}
+template <class S>
+void require_finite_rhs(const Dense_vector<S>& b, const char* who) {
+  for (Eigen::Index i = 0; i < b.size(); ++i)
+    if (!is_finite_number(b(i)))
+      throw Non_finite_input(std::string(who) + ": right-hand side entry " + std::to_string(i) +
+                             " is NaN or infinite");
+}
 template <class S>
 void require_finite_entries(const Dense_matrix<S>& a, const char* who) {
   for (Eigen::Index j = 0; j < a.cols(); ++j)
@@ -150,10 +177,8 @@ double largest_magnitude(const Dense_matrix<S>& a, bool upper) {
 template <class S>
 Lu_decomposition<S> lu_decompose(Dense_matrix<S> a, Pivoting pivoting) {
   const Eigen::Index n = a.rows();
-  if (a.cols() != n)
-    throw Invalid_input("Gaussian elimination: the matrix is " + std::to_string(a.rows()) + " x " +
-                        std::to_string(a.cols()) + ", not square");
-  if (n == 0) throw Invalid_input("Gaussian elimination: empty matrix", Error_code::empty_input);
+  internal::require_square(a, "Gaussian elimination");
+  internal::require_not_empty(a, "Gaussian elimination");
   internal::require_finite_entries(a, "Gaussian elimination");
 
   Lu_decomposition<S> f;
@@ -267,13 +292,8 @@ Dense_vector<S> Lu_decomposition<S>::solve(const Dense_vector<S>& b) const {
 template <class S>
 Dense_vector<S> gaussian_elimination(const Dense_matrix<S>& a, const Dense_vector<S>& b,
                                      Pivoting pivoting) {
-  if (a.rows() != b.size())
-    throw Invalid_input("Gaussian elimination: the matrix has " + std::to_string(a.rows()) +
-                        " rows but the right-hand side has " + std::to_string(b.size()) + " entries");
-  for (Eigen::Index i = 0; i < b.size(); ++i)
-    if (!is_finite_number(b(i)))
-      throw Non_finite_input("Gaussian elimination: right-hand side entry " + std::to_string(i) +
-                             " is NaN or infinite");
+  internal::require_rhs_rows(a, b, "Gaussian elimination");
+  internal::require_finite_rhs(b, "Gaussian elimination");
   return lu_decompose<S>(a, pivoting).solve(b);
 }
 

@@ -34,16 +34,12 @@ concept Linear_scalar = Number_traits<S>::kind == Number_kind::floating_point ||
 template <class S>
 using Scalar_traits = Number_traits<S>;
 
-}  // namespace relgeo
-
-// ---- Eigen::NumTraits ----------------------------------------------------------
-
-namespace Eigen {
-
-/// Mpfr_number<Bits> in Eigen matrices (LU decompositions, products...).
-template <int Bits>
-struct NumTraits<relgeo::Mpfr_number<Bits>> : GenericNumTraits<relgeo::Mpfr_number<Bits>> {
-  using S = relgeo::Mpfr_number<Bits>;
+namespace internal {
+/// What Eigen's traits of a real scalar that lives on the heap (MPFR, GMP)
+/// have in common: its own real and literal type, signed, not an integer,
+/// constructed before use, and expensive to read and compute with.
+template <class S>
+struct Allocating_real_num_traits : Eigen::GenericNumTraits<S> {
   using Real = S;
   using NonInteger = S;
   using Nested = S;
@@ -53,10 +49,23 @@ struct NumTraits<relgeo::Mpfr_number<Bits>> : GenericNumTraits<relgeo::Mpfr_numb
     IsInteger = 0,
     IsSigned = 1,
     RequireInitialization = 1,
-    ReadCost = HugeCost,
-    AddCost = HugeCost,
-    MulCost = HugeCost
+    ReadCost = Eigen::HugeCost,
+    AddCost = Eigen::HugeCost,
+    MulCost = Eigen::HugeCost
   };
+};
+}  // namespace internal
+
+}  // namespace relgeo
+
+// ---- Eigen::NumTraits ----------------------------------------------------------
+
+namespace Eigen {
+
+/// Mpfr_number<Bits> in Eigen matrices (LU decompositions, products...).
+template <int Bits>
+struct NumTraits<relgeo::Mpfr_number<Bits>> : relgeo::internal::Allocating_real_num_traits<relgeo::Mpfr_number<Bits>> {
+  using S = relgeo::Mpfr_number<Bits>;
   static inline int digits10() { return static_cast<int>(Bits * 0.30102999566398120); }
   static inline int digits() { return Bits; }
   /// 2^(1 - Bits), the distance from 1 to the next value (Eigen's convention).
@@ -84,20 +93,7 @@ struct NumTraits<relgeo::Mpfr_number<Bits>> : GenericNumTraits<relgeo::Mpfr_numb
 /// expression templates: never store `a * b` in `auto` (STYLE: Eigen's
 /// TopicPitfalls applies to gmpxx too).
 template <>
-struct NumTraits<mpq_class> : GenericNumTraits<mpq_class> {
-  using Real = mpq_class;
-  using NonInteger = mpq_class;
-  using Nested = mpq_class;
-  using Literal = mpq_class;
-  enum {
-    IsComplex = 0,
-    IsInteger = 0,
-    IsSigned = 1,
-    RequireInitialization = 1,
-    ReadCost = HugeCost,
-    AddCost = HugeCost,
-    MulCost = HugeCost
-  };
+struct NumTraits<mpq_class> : relgeo::internal::Allocating_real_num_traits<mpq_class> {
   static inline mpq_class epsilon() { return mpq_class(0); }
   static inline mpq_class dummy_precision() { return mpq_class(0); }
   static inline int digits10() { return 0; }

@@ -87,17 +87,11 @@ Dense_vector<S> solve_linear_system(const Dense_matrix<S>& a, const Dense_vector
     default: break;
   }
   // Same input checks as relgeo's own elimination.
-  if (a.rows() != a.cols())
-    throw Invalid_input("Eigen LU: the matrix is " + std::to_string(a.rows()) + " x " +
-                        std::to_string(a.cols()) + ", not square");
-  if (a.rows() == 0) throw Invalid_input("Eigen LU: empty matrix", Error_code::empty_input);
-  if (a.rows() != b.size())
-    throw Invalid_input("Eigen LU: the matrix has " + std::to_string(a.rows()) +
-                        " rows but the right-hand side has " + std::to_string(b.size()) + " entries");
+  internal::require_square(a, "Eigen LU");
+  internal::require_not_empty(a, "Eigen LU");
+  internal::require_rhs_rows(a, b, "Eigen LU");
   internal::require_finite_entries(a, "Eigen LU");
-  for (Eigen::Index i = 0; i < b.size(); ++i)
-    if (!is_finite_number(b(i)))
-      throw Non_finite_input("Eigen LU: right-hand side entry " + std::to_string(i) + " is NaN or infinite");
+  internal::require_finite_rhs(b, "Eigen LU");
   if (method == Linear_solver::eigen_partial_piv_lu) {
     const Eigen::PartialPivLU<Dense_matrix<S>> lu(a);
     internal::require_nonzero_pivots<S>(lu, "Eigen::PartialPivLU", true);

@@ -555,6 +555,121 @@ class Triangle_intersector {
 
 }  // namespace internal
 
+namespace internal {
+
+// Fast test of Guigue and Devillers: orientations of input points only.
+template <class K>
+class Triangle_overlap_test {
+ public:
+  using P = typename K::Point_3;
+  using Triangle = std::array<P, 3>;
+
+  explicit Triangle_overlap_test(const K& k) : orient3_(k.orientation_3_object()), k_(k) {}
+
+  std::optional<bool> run(Triangle a, Triangle b) const {
+    std::array<Certified_sign, 3> sb{orient3_(a[0], a[1], a[2], b[0]), orient3_(a[0], a[1], a[2], b[1]),
+                                     orient3_(a[0], a[1], a[2], b[2])};
+    if (strictly_one_side(sb)) return false;
+    std::array<Certified_sign, 3> sa{orient3_(b[0], b[1], b[2], a[0]), orient3_(b[0], b[1], b[2], a[1]),
+                                     orient3_(b[0], b[1], b[2], a[2])};
+    if (strictly_one_side(sa)) return false;
+    for (int i = 0; i < 3; ++i)
+      if (!is_certain(sa[i]) || !is_certain(sb[i])) return std::nullopt;
+    if (all_zero(sa)) return coplanar(a, b);
+    // Normalise: a[0] alone on the nonnegative side of b's plane, a[1], a[2]
+    // on the nonpositive side (flipping b's plane by swapping b[1], b[2] if
+    // needed); then the same for b against a's plane (swapping a[1], a[2]).
+    normalise(a, sa, b, sb);
+    normalise(b, sb, a, sa);
+    // The cuts [i, j] of a (on edges a0a1, a0a2) and [k, l] of b (on b0b1,
+    // b0b2) lie on the common line; these orientations compare i with k and
+    // j with l along it, which decides their overlap.
+    const Certified_sign c1 = orient3_(a[0], a[1], b[0], b[1]);
+    const Certified_sign c2 = orient3_(a[0], a[2], b[2], b[0]);
+    if (!is_certain(c1) || !is_certain(c2)) return std::nullopt;
+    return c1 != Certified_sign::positive && c2 != Certified_sign::positive;
+  }
+
+ private:
+  static bool strictly_one_side(const std::array<Certified_sign, 3>& s) {
+    return s[0] == s[1] && s[1] == s[2] && (s[0] == Certified_sign::positive || s[0] == Certified_sign::negative);
+  }
+  static bool all_zero(const std::array<Certified_sign, 3>& s) {
+    return s[0] == Certified_sign::zero && s[1] == Certified_sign::zero && s[2] == Certified_sign::zero;
+  }
+  static bool alone_at(const std::array<Certified_sign, 3>& s, int i) {
+    const auto le0 = [](Certified_sign x) { return x != Certified_sign::positive; };
+    return s[i] != Certified_sign::negative && le0(s[(i + 1) % 3]) && le0(s[(i + 2) % 3]);
+  }
+  // t's vertices rotated so that t[0] is alone (>= 0, the others <= 0),
+  // flipping the other plane (swapping o[1], o[2], which negates t's signs and
+  // swaps the other's signs) when no vertex is alone.
+  static void normalise(Triangle& t, std::array<Certified_sign, 3>& st, Triangle& o, std::array<Certified_sign, 3>& so) {
+    for (int flip = 0; flip < 2; ++flip) {
+      for (int i = 0; i < 3; ++i)
+        if (alone_at(st, i)) {
+          std::rotate(t.begin(), t.begin() + i, t.end());
+          std::rotate(st.begin(), st.begin() + i, st.end());
+          return;
+        }
+      std::swap(o[1], o[2]);
+      std::swap(so[1], so[2]);
+      for (auto& x : st) x = -x;
+    }
+  }
+  // Coplanar triangles: closed triangles in one plane overlap unless an edge
+  // line of one strictly separates the other's vertices (the 2D separating
+  // axis theorem), decided in a projection where neither degenerates.
+  std::optional<bool> coplanar(const Triangle& a, const Triangle& b) const {
+    const auto o2 = k_.orientation_2_object();
+    const auto project = [&](const P& p, int axis) {  // kept axes (axis+1)%3, (axis+2)%3
+      return typename K::Point_2{axis == 0 ? p.y : (axis == 1 ? p.z : p.x), axis == 0 ? p.z : (axis == 1 ? p.x : p.y)};
+    };
+    for (int axis = 2; axis >= 0; --axis) {
+      std::array<typename K::Point_2, 3> A, B;
+      for (int i = 0; i < 3; ++i) A[i] = project(a[i], axis), B[i] = project(b[i], axis);
+      const Certified_sign sa = o2(A[0], A[1], A[2]);
+      if (sa == Certified_sign::zero) continue;
+      const Certified_sign sb = o2(B[0], B[1], B[2]);
+      if (!is_certain(sa) || !is_certain(sb)) return std::nullopt;
+      if (sb == Certified_sign::zero) throw Precondition_violation("do_intersect_triangles: a degenerate triangle");
+      bool unknown = false;
+      const auto separates = [&](const std::array<typename K::Point_2, 3>& T, Certified_sign s,
+                                 const std::array<typename K::Point_2, 3>& U) {
+        for (int e = 0; e < 3; ++e) {
+          bool all_out = true;
+          for (int v = 0; v < 3 && all_out; ++v) {
+            const Certified_sign side = o2(T[e], T[(e + 1) % 3], U[v]);
+            if (!is_certain(side)) unknown = true;
+            all_out = side == -s;
+          }
+          if (all_out) return true;
+        }
+        return false;
+      };
+      if (separates(A, sa, B) || separates(B, sb, A)) return false;
+      if (unknown) return std::nullopt;
+      return true;
+    }
+    throw Precondition_violation("do_intersect_triangles: a degenerate triangle");
+  }
+
+  typename K::Orientation_3 orient3_;
+  const K& k_;
+};
+
+}  // namespace internal
+
+/// \brief Whether triangles a and b intersect (closed triangles: touching
+/// counts), from orientations of the input points only (Guigue-Devillers):
+/// the fast test when the intersection itself is not needed. Empty when the
+/// kernel cannot decide. \pre neither triangle is degenerate.
+template <class K>
+std::optional<bool> do_intersect_triangles(const std::array<typename K::Point_3, 3>& a,
+                                           const std::array<typename K::Point_3, 3>& b, const K& k = K{}) {
+  return internal::Triangle_overlap_test<K>(k).run(a, b);
+}
+
 /// \brief The intersection of triangles a and b (each three points of K),
 /// classified, with its points and their locations on both triangles.
 ///

@@ -40,7 +40,7 @@ template <class T>
   requires std::is_floating_point_v<T>
 class Failsafe_kernel
     : public internal::Kernel_base<Failsafe_kernel<T>, T>,
-      public internal::Implicit_kernel_base<internal::Enclosed_implicit_policy<Point_3<T>, internal::Error_bounded<T>>> {
+      public internal::Implicit_kernel_base<internal::Enclosed_implicit_policy<Point_3<T>, internal::Filtered_value<T>>> {
   using Base = internal::Kernel_base<Failsafe_kernel<T>, T>;
   using C = internal::Orientation_filter_constants<T>;
 

@@ -15,8 +15,8 @@
 //  |------------------------|-----------------------------|---------------------------------------------|
 //  | Naive_kernel<T>        | the point rounded to T      | the naive predicates on it (may be wrong)   |
 //  | Mpfr_kernel<B>         | the point rounded to B bits | the MPFR predicates on it (may be wrong)    |
-//  | Failsafe_kernel<T>     | homogeneous coordinates with | running error bound in T (error_bounded.h); |
-//  |                        | a running error bound in T  | uncertain when it does not separate from 0  |
+//  | Failsafe_kernel<T>     | homogeneous coordinates with | a rounding-error bound in T (filtered_value |
+//  |                        | their rounding-error bound  | .h); uncertain when it does not exclude 0   |
 //  | Interval_kernel        | interval homogeneous coords | interval arithmetic; uncertain when 0 is in |
 //  | Filtered_exact_kernel  | its defining doubles and    | error bound -> intervals -> GMP integers:   |
 //  |                        | error-bounded coordinates   | always exact                                |
@@ -102,6 +102,12 @@ class Implicit_kernel_base {
     Certified_sign operator()(const Implicit_point_3& a, const Implicit_point_3& b, const Implicit_point_3& c,
                               const Implicit_point_3& d) const {
       return Policy::orientation_3(a, b, c, d);
+    }
+    /// d against the plane of three input points (the common query).
+    Certified_sign operator()(const Explicit_point_3& a, const Explicit_point_3& b, const Explicit_point_3& c,
+                              const Implicit_point_3& d) const {
+      if constexpr (requires { Policy::orientation_3(a, b, c, d); }) return Policy::orientation_3(a, b, c, d);
+      else return Policy::orientation_3(Policy::make(a), Policy::make(b), Policy::make(c), d);
     }
   };
 

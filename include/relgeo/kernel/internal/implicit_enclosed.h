@@ -1,6 +1,6 @@
 // relgeo/kernel/internal/implicit_enclosed.h — implicit points as enclosures
-// of their homogeneous coordinates: Failsafe_kernel<T> (a running error bound
-// in T, error_bounded.h) and Interval_kernel (intervals). There is no exact
+// of their homogeneous coordinates: Failsafe_kernel<T> (values with a bound
+// on their rounding error in T, filtered_value.h) and Interval_kernel (intervals). There is no exact
 // fallback: a predicate answers `uncertain` when its enclosure contains 0, and
 // a point whose denominator W cannot be certified nonzero is not built.
 #pragma once
@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/interval.h"
@@ -16,14 +17,15 @@
 #include "relgeo/core/rounding.h"
 #include "relgeo/kernel/implicit_point.h"
 #include "relgeo/kernel/internal/implicit_predicates.h"
+#include "relgeo/kernel/internal/lpi_filter.h"
 
 namespace relgeo::internal {
 
 /// An Interval containing the exact value an enclosure stands for.
 inline Interval enclosure_interval(const Interval& v) { return v; }
 template <class T>
-Interval enclosure_interval(const Error_bounded<T>& v) {
-  const double e = upper_double(v.error);
+Interval enclosure_interval(const Filtered_value<T>& v) {
+  const double e = upper_double(v.error_bound());
   return Interval(sub_down(lower_double(v.value), e), add_up(upper_double(v.value), e));
 }
 
@@ -47,11 +49,13 @@ Approximate_point_3 approximate_from_enclosure(const Homogeneous_3<NT>& h) {
 }
 
 /// Policy of Implicit_kernel_base for kernels whose implicit points are
-/// enclosures in NT (Error_bounded<T> or Interval), built from explicit
+/// enclosures in NT (Filtered_value<T> or Interval), built from explicit
 /// points of type Explicit (Point_3<T> or Point_3<Interval>).
 template <class Explicit_, class NT>
 struct Enclosed_implicit_policy {
   using Explicit = Explicit_;
+  // Filtered_value<T> over points of T: the closed-form paths of lpi_filter.h.
+  static constexpr bool closed_form = std::is_same_v<NT, Filtered_value<decltype(Explicit{}.x)>>;
   struct Point {
     Homogeneous_3<NT> h;
     Implicit_point_kind kind = Implicit_point_kind::explicit_point;
@@ -63,7 +67,8 @@ struct Enclosed_implicit_policy {
   static std::optional<Point> lpi(const Explicit& p, const Explicit& q, const Explicit& r, const Explicit& s,
                                   const Explicit& t) {
     return in_default_fp_environment([&] {
-      return checked(lpi_coordinates(to_nt(p), to_nt(q), to_nt(r), to_nt(s), to_nt(t)), Implicit_point_kind::lpi);
+      if constexpr (closed_form) return checked(lpi_filter(p, q, r, s, t), Implicit_point_kind::lpi);
+      else return checked(lpi_coordinates(to_nt(p), to_nt(q), to_nt(r), to_nt(s), to_nt(t)), Implicit_point_kind::lpi);
     });
   }
   static std::optional<Point> tpi(const std::array<Explicit, 9>& v) {
@@ -75,6 +80,13 @@ struct Enclosed_implicit_policy {
   }
   static Certified_sign orientation_3(const Point& a, const Point& b, const Point& c, const Point& d) {
     return in_default_fp_environment([&] { return orientation_3_sign<NT>({&a.h, &b.h, &c.h, &d.h}); });
+  }
+  /// d against the plane of three input points.
+  static Certified_sign orientation_3(const Explicit& a, const Explicit& b, const Explicit& c, const Point& d) {
+    if constexpr (closed_form)
+      return in_default_fp_environment([&] { return orientation_3_filter(a, b, c, d.h).sign() * sign_of_w(d.h); });
+    else
+      return orientation_3(make(a), make(b), make(c), d);
   }
   static Certified_sign orientation_2(const Point& a, const Point& b, const Point& c, int axis) {
     return in_default_fp_environment([&] { return orientation_2_sign<NT>({&a.h, &b.h, &c.h}, axis); });

@@ -2,7 +2,8 @@
 // points of double inputs at floating-point speed (Filtered_exact_kernel).
 //
 // A point keeps its defining doubles and, computed once when it is built,
-// its homogeneous coordinates with a running error bound (error_bounded.h).
+// its homogeneous coordinates with a bound on their rounding error
+// (filtered_value.h).
 // Each predicate tries
 //  1. the error-bounded coordinates (no recomputation: a few dozen flops),
 //  2. intervals recomputed from the defining doubles (tighter),
@@ -29,6 +30,7 @@
 #include "relgeo/kernel/implicit_point.h"
 #include "relgeo/kernel/internal/implicit_enclosed.h"
 #include "relgeo/kernel/internal/implicit_predicates.h"
+#include "relgeo/kernel/internal/lpi_filter.h"
 
 namespace relgeo::internal {
 
@@ -39,9 +41,9 @@ constexpr int defining_point_count(Implicit_point_kind kind) {
 
 /// An implicit point of double inputs with its first-stage coordinates.
 struct Staged_implicit_point {
-  std::array<Point_3<double>, 9> primitives{};
-  Homogeneous_3<Error_bounded<double>> filter;
+  Homogeneous_3<Filtered_value<double>> filter;
   Implicit_point_kind kind = Implicit_point_kind::explicit_point;
+  std::array<Point_3<double>, 9> primitives;  ///< the first defining_point_count(kind) are set
 };
 
 /// Homogeneous coordinates of a point in NT, from its defining doubles
@@ -92,7 +94,7 @@ class Scaled_integers {
 /// stages on the points given.
 template <std::size_t N, class Sign>
 Certified_sign staged_sign(const std::array<const Staged_implicit_point*, N>& points, const Sign& sign) {
-  std::array<const Homogeneous_3<Error_bounded<double>>*, N> filters;
+  std::array<const Homogeneous_3<Filtered_value<double>>*, N> filters;
   for (std::size_t i = 0; i < N; ++i) filters[i] = &points[i]->filter;
   const Certified_sign first = in_default_fp_environment([&] { return sign(filters); });
   if (is_certain(first)) [[likely]]
@@ -125,7 +127,7 @@ struct Staged_implicit_policy {
   static Point make(const Explicit& p) {
     Point r;
     r.primitives[0] = p;
-    r.filter = explicit_coordinates(Point_3<Error_bounded<double>>{p.x, p.y, p.z});
+    r.filter = explicit_coordinates(Point_3<Filtered_value<double>>{p.x, p.y, p.z});
     return r;
   }
   static std::optional<Point> lpi(const Explicit& p, const Explicit& q, const Explicit& r, const Explicit& s,
@@ -138,6 +140,16 @@ struct Staged_implicit_policy {
     return staged_sign(std::array<const Point*, 4>{&a, &b, &c, &d}, [](const auto& h) {
       return orientation_3_sign(h);
     });
+  }
+  /// orientation_3 of explicit a, b, c and any d (the common query: a point
+  /// against an input triangle's plane) without building a, b, c first.
+  static Certified_sign orientation_3(const Explicit& a, const Explicit& b, const Explicit& c, const Point& d) {
+    const Certified_sign first = in_default_fp_environment([&] {
+      return orientation_3_filter(a, b, c, d.filter).sign() * sign_of_w(d.filter);
+    });
+    if (is_certain(first)) [[likely]]
+      return first;
+    return orientation_3(make(a), make(b), make(c), d);
   }
   static Certified_sign orientation_2(const Point& a, const Point& b, const Point& c, int axis) {
     return staged_sign(std::array<const Point*, 3>{&a, &b, &c}, [axis](const auto& h) {
@@ -181,15 +193,20 @@ struct Staged_implicit_policy {
       if (!all_finite(v[i].x, v[i].y, v[i].z)) return std::nullopt;
       r.primitives[i] = v[i];
     }
-    r.filter = in_default_fp_environment([&] {
-      return homogeneous_coordinates<Error_bounded<double>>(r, [](double x) { return Error_bounded<double>(x); });
+    // W must be nonzero: decided on the error-bounded W when it can be,
+    // through the later stages otherwise.
+    const Certified_sign w = in_default_fp_environment([&] {
+      if constexpr (N == 5) r.filter = lpi_filter(v[0], v[1], v[2], v[3], v[4]);
+      else r.filter = homogeneous_coordinates<Filtered_value<double>>(r, [](double x) { return Filtered_value<double>(x); });
+      return certified_sign_of(r.filter.w);
     });
-    // W must be nonzero: decided through the stages (a W of one point is
-    // its coordinate difference with nothing; compare it with an explicit 0).
-    const Certified_sign w = staged_sign(std::array<const Point*, 1>{&r}, [](const auto& h) {
+    if (w == Certified_sign::positive || w == Certified_sign::negative) [[likely]]
+      return r;
+    if (w == Certified_sign::zero) return std::nullopt;
+    const Certified_sign exact = staged_sign(std::array<const Point*, 1>{&r}, [](const auto& h) {
       return certified_sign_of(h[0]->w);
     });
-    if (w == Certified_sign::zero) return std::nullopt;
+    if (exact == Certified_sign::zero) return std::nullopt;
     return r;
   }
 };

@@ -16,6 +16,7 @@
 
 #include "relgeo/analysis/implicit_workloads.h"
 #include "relgeo/kernel.h"
+#include "support/fp_environments.h"
 #include "support/implicit_oracle.h"
 #include "support/soundness_data.h"
 
@@ -221,6 +222,22 @@ TEST(ImplicitSoundness, TheDegenerateFamiliesAreHardForNaiveKernels) {
   EXPECT_GT(m.at("on-plane").all().wrong, 0u);
 }
 TEST(ImplicitSoundness, NaiveLongDoubleIsCounted) { run_all<Naive_kernel<long double>>(); }
+
+// The soundness rule whatever floating-point environment the caller set
+// (flush-to-zero, denormals-are-zero, directed rounding): every tenth case
+// of every family, the certified kernels built and asked in that environment.
+TEST(ImplicitSoundness, SoundInEveryFloatingPointEnvironment) {
+  for (const auto& setting : non_default_fp_environments()) {
+    const Scoped_fp_environment environment(setting);
+    for (const auto& f : families()) {
+      const auto filtered = run<Filtered_exact_kernel>(f, 10);
+      EXPECT_EQ(filtered.all().wrong + filtered.construction.wrong, 0u) << setting.name << " " << f.w.name;
+      EXPECT_EQ(filtered.all().uncertain, 0u) << setting.name << " " << f.w.name;
+      for (const auto& t : {run<Failsafe_kernel<double>>(f, 10), run<Interval_kernel>(f, 10)})
+        EXPECT_EQ(t.all().wrong + t.construction.wrong, 0u) << setting.name << " " << f.w.name;
+    }
+  }
+}
 
 }  // namespace
 }  // namespace relgeo::test

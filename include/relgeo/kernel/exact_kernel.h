@@ -13,6 +13,7 @@
 #include "relgeo/core/dyadic.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/kernel_base.h"
+#include "relgeo/kernel/internal/implicit_rounded.h"
 
 namespace relgeo {
 
@@ -24,7 +25,8 @@ class Filtered_exact_kernel;  // the Double_point_kernel hook below (filtered_ex
 ///
 /// Building a point from a NaN or infinite double throws Non_finite_input
 /// (a rational cannot hold it).
-class Exact_kernel : public internal::Kernel_base<Exact_kernel, mpq_class> {
+class Exact_kernel : public internal::Kernel_base<Exact_kernel, mpq_class>,
+                     public internal::Implicit_kernel_base<internal::Rounded_implicit_policy<Exact_kernel, mpq_class>> {
  public:
   static std::string name() { return "exact"; }
   static constexpr double unit_roundoff = 0;

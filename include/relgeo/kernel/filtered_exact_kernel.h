@@ -13,6 +13,7 @@
 #include "relgeo/kernel/internal/exact_dyadic.h"
 #include "relgeo/kernel/internal/expansion_orientation.h"
 #include "relgeo/kernel/internal/kernel_base.h"
+#include "relgeo/kernel/internal/implicit_staged.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
 #include "relgeo/core/interval.h"
 
@@ -42,7 +43,8 @@ enum class Filter_stage {
 ///
 /// The only `uncertain` answer is for NaN or infinite coordinates, whose sign
 /// is undefined.
-class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel, double> {
+class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel, double>,
+                              public internal::Implicit_kernel_base<internal::Staged_implicit_policy> {
  public:
   static std::string name() { return "filtered"; }
   static constexpr double unit_roundoff = unit_roundoff_v<double>;  // of constructions

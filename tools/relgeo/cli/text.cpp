@@ -1,64 +1,25 @@
-// tools/relgeo/tool_common.cpp
-#include "tool_common.h"
+// tools/relgeo/cli/text.cpp
+#include "cli/text.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <system_error>
+
+#include "relgeo/io/number_text.h"
 
 namespace relgeo::tool {
-
-namespace {
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-}  // namespace
-
-double parse_double(std::string_view text, std::string_view what) {
-  std::string_view s = trim(text);
-  std::string_view digits = s;
-  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);  // from_chars rejects '+'
-  if (digits.empty() || (digits.front() == '-' && s.front() == '+'))
-    throw Usage_error(std::string(what) + ": '" + std::string(text) + "' is not a number");
-  double v = 0;
-  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v,
-                                         std::chars_format::general);
-  if (ec == std::errc::result_out_of_range && end == digits.data() + digits.size()) {
-    // from_chars refuses underflow as well as overflow. A literal below the
-    // smallest subnormal rounds to (signed) zero: glibc's strtod rounds
-    // correctly and tells the two apart (HUGE_VAL on overflow).
-    const std::string copy(digits);
-    v = std::strtod(copy.c_str(), nullptr);
-    if (!std::isfinite(v))
-      throw Usage_error(std::string(what) + ": '" + std::string(text) +
-                        "' is out of the range of double");
-    return v;
-  }
-  if (ec != std::errc() || end != digits.data() + digits.size())
-    throw Usage_error(std::string(what) + ": '" + std::string(text) + "' is not a number");
-  if (!std::isfinite(v))
-    throw Usage_error(std::string(what) + ": '" + std::string(text) +
-                      "' is not finite (NaN and infinities are refused)");
-  return v;
-}
 
 std::pair<double, double> parse_point_2(std::string_view text, std::string_view what) {
   const std::size_t comma = text.find(',');
   if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos)
     throw Usage_error(std::string(what) + ": expected X,Y (two numbers and one comma), got '" +
                       std::string(text) + "'");
-  return {parse_double(text.substr(0, comma), what), parse_double(text.substr(comma + 1), what)};
+  const std::string source(what);
+  return {io::parse_double(text.substr(0, comma), source), io::parse_double(text.substr(comma + 1), source)};
 }
 
-std::string format_17(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string format_17(double v) { return io::format_17(v); }
+
 std::string format_point_17(double x, double y) {
   std::string s = "(";  // appended piecewise: GCC 12 warns (-Wrestrict) on "(" + std::string&&
   s += format_17(x);
@@ -76,6 +37,26 @@ std::string format_fixed(double v, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
   return buf;
+}
+
+std::string measure_text(double v, int digits) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  if (v == 0) return "0";
+  return format_g(v, digits);
+}
+
+std::string duration_text(double s) {
+  if (s < 1e-6) return format_g(s * 1e9, 3) + " ns";
+  if (s < 1e-3) return format_g(s * 1e6, 3) + " us";
+  if (s < 1) return format_g(s * 1e3, 3) + " ms";
+  return format_g(s, 3) + " s";
+}
+
+void Key_value_text::add(std::string_view key, std::string_view value) {
+  text_ += key;
+  text_ += std::string(key.size() < width_ ? width_ - key.size() : 1, ' ');
+  text_ += value;
+  text_ += '\n';
 }
 
 std::string one_line(std::string_view message) {

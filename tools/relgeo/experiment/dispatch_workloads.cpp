@@ -1,10 +1,13 @@
-// tools/relgeo/workload_eval.cpp — predicate workloads under every kernel,
-// timed (instantiates all kernels, CGAL Epeck included).
+// tools/relgeo/experiment/dispatch_workloads.cpp — predicate workloads under
+// every kernel, timed (CGAL Epeck included).
+#include <array>
 #include <chrono>
+#include <string>
 #include <vector>
 
-#include "kernel_dispatch.h"
-#include "kernel_runs.h"
+#include "experiment/workloads.h"
+#include "kernels/cgal_kernels.h"
+#include "kernels/dispatch.h"
 
 namespace relgeo::tool {
 
@@ -47,46 +50,50 @@ Workload_measurement run_timed(const std::vector<Points>& points, std::span<cons
   return m;
 }
 
+/// Builds every case's points under the named kernel (not timed), then
+/// times `predicate` on them. `points(k, c)` returns the points of case c as
+/// an array; `predicate(k)` returns a function of such an array.
+template <class Case, class Points, class Predicate>
+Workload_measurement measure_workload(std::string_view kernel, std::span<const Case> cases,
+                                      std::span<const Certified_sign> exact, double min_seconds, const char* what,
+                                      Points points, Predicate predicate) {
+  if (cases.size() != exact.size()) throw Precondition_violation(std::string(what) + ": sizes differ");
+  return with_kernel(kernel, [&]<class K>(const K& k) {
+    using Array = decltype(points(k, cases.front()));
+    std::vector<Array> built;
+    built.reserve(cases.size());
+    for (const auto& c : cases) built.push_back(points(k, c));
+    return run_timed(built, exact, min_seconds, predicate(k));
+  });
+}
+
 }  // namespace
 
 Workload_measurement measure_orientation_2(std::string_view kernel,
                                            std::span<const analysis::Orientation_2_case> cases,
-                                           std::span<const Certified_sign> exact,
-                                           double min_seconds) {
-  if (cases.size() != exact.size()) throw Precondition_violation("measure_orientation_2: sizes differ");
-  return with_kernel(kernel, [&]<class K>(const K& k) {
-    using P = typename K::Point_2;
-    struct Triple { P p, q, r; };
+                                           std::span<const Certified_sign> exact, double min_seconds) {
+  const auto points = [](const auto& k, const analysis::Orientation_2_case& c) {
     const auto pt = k.construct_point_2_object();
-    std::vector<Triple> points;
-    points.reserve(cases.size());
-    for (const auto& c : cases) points.push_back({pt(c.px, c.py), pt(c.qx, c.qy), pt(c.rx, c.ry)});
-    const auto orient = k.orientation_2_object();
-    return run_timed(points, exact, min_seconds,
-                     [&](const Triple& t) { return orient(t.p, t.q, t.r); });
-  });
+    return std::array{pt(c.px, c.py), pt(c.qx, c.qy), pt(c.rx, c.ry)};
+  };
+  const auto predicate = [](const auto& k) {
+    return [orient = k.orientation_2_object()](const auto& p) { return orient(p[0], p[1], p[2]); };
+  };
+  return measure_workload(kernel, cases, exact, min_seconds, "measure_orientation_2", points, predicate);
 }
 
 Workload_measurement measure_orientation_3(std::string_view kernel,
                                            std::span<const analysis::Orientation_3_case> cases,
-                                           std::span<const Certified_sign> exact,
-                                           double min_seconds) {
-  if (cases.size() != exact.size()) throw Precondition_violation("measure_orientation_3: sizes differ");
-  return with_kernel(kernel, [&]<class K>(const K& k) {
-    using P = typename K::Point_3;
-    struct Quadruple { P p, q, r, s; };
+                                           std::span<const Certified_sign> exact, double min_seconds) {
+  const auto points = [](const auto& k, const analysis::Orientation_3_case& c) {
     const auto pt = k.construct_point_3_object();
-    std::vector<Quadruple> points;
-    points.reserve(cases.size());
-    for (const auto& c : cases) {
-      const auto& v = c.c;
-      points.push_back({pt(v[0], v[1], v[2]), pt(v[3], v[4], v[5]), pt(v[6], v[7], v[8]),
-                        pt(v[9], v[10], v[11])});
-    }
-    const auto orient = k.orientation_3_object();
-    return run_timed(points, exact, min_seconds,
-                     [&](const Quadruple& t) { return orient(t.p, t.q, t.r, t.s); });
-  });
+    const auto& v = c.c;
+    return std::array{pt(v[0], v[1], v[2]), pt(v[3], v[4], v[5]), pt(v[6], v[7], v[8]), pt(v[9], v[10], v[11])};
+  };
+  const auto predicate = [](const auto& k) {
+    return [orient = k.orientation_3_object()](const auto& p) { return orient(p[0], p[1], p[2], p[3]); };
+  };
+  return measure_workload(kernel, cases, exact, min_seconds, "measure_orientation_3", points, predicate);
 }
 
 }  // namespace relgeo::tool

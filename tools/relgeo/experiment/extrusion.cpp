@@ -1,4 +1,4 @@
-// tools/relgeo/experiment_extrusion.cpp — the "extrusion" section of `relgeo
+// tools/relgeo/experiment/extrusion.cpp — the "extrusion" section of `relgeo
 // experiment` (thesis Sec. 3.4.1):
 //  (1) a gallery of contours (circle-like cubic chains, the three classic
 //      failures, a pinch below the uncertainty, a 3D contour) under
@@ -11,19 +11,24 @@
 // certified, or a well-formed circle chain is refused (by any kernel: the
 // hull certificate is exact, so even naive kernels must never certify wrongly).
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
-#include "experiment.h"
-#include "extrusion_runs.h"
-#include "hull_runs.h"
-#include "kernel_names.h"
+#include "commands/extrusion/facade.h"
+#include "commands/extrusion/report.h"
+#include "commands/hull/facade.h"
+#include "experiment/section.h"
+#include "kernels/registry.h"
 #include "relgeo/curves/test_contours.h"
-#include "tool_common.h"
 
 namespace relgeo::tool {
 
 namespace {
+
+using io::Json;
+
+std::string extrusion_measure_text(double v) { return measure_text(v, 4); }
 
 struct Case {
   std::string name;
@@ -94,6 +99,8 @@ Section_report extrusion_section(const Experiment_context& ctx) {
     t.set_left_columns(1);
     Json rows = Json::array();
     int index = 0;
+    std::vector<Picture> pictures;
+    std::map<std::string, int> verdicts;
     for (const Case& c : gallery) {
       const Extrusion_options o = options_of(c);
       double time_s = 0;
@@ -101,6 +108,8 @@ Section_report extrusion_section(const Experiment_context& ctx) {
       check_expectation(c, "failsafe/graham-fortune", r);
       const std::string file = "contour_" + std::to_string(index++) + ".svg";
       write_extrusion_svg((dir / file).string(), c.contour, r, c.name + " (failsafe, graham-fortune)");
+      pictures.push_back({ctx.relative(dir / file), c.name + ": " + std::string(to_string(r.verdict))});
+      ++verdicts[std::string(to_string(r.verdict))];
       std::string worst = "-";
       if (!r.offending.empty()) {
         const auto& p = r.offending.front();
@@ -110,17 +119,24 @@ Section_report extrusion_section(const Experiment_context& ctx) {
       t.add_row({c.name, std::to_string(c.contour.size()), format_g(c.uncertainty, 2), std::string(to_string(r.verdict)),
                  margin_text(r.conditions[0]), margin_text(r.conditions[1]), margin_text(r.conditions[2]),
                  std::to_string(r.offending_total), worst, file});
-      Extrusion_input in;
+      io::Contour_input in;
       in.source = c.name;
       in.contour = c.contour;
       Json j = extrusion_report_json(in, "failsafe", "graham-fortune", o, r, time_s);
       j["picture"] = ctx.relative(dir / file);
       rows.push_back(j);
     }
-    rep.text += "Extruded objects (thesis Sec. 3.4.1): the three sufficient conditions as planar hull problems, "
-                "kernel failsafe,\nalgorithm graham-fortune. Margins: exact, rounded down, signed (<= 0: the "
-                "condition fails); (>=): condition 3's\nprune radius bounds the pairs not computed. delta: relative "
-                "input uncertainty.\n\n" + t.str() + "\n";
+    rep.add_note("Extruded objects (thesis Sec. 3.4.1): the three sufficient conditions as planar hull problems, "
+                 "kernel failsafe,\nalgorithm graham-fortune. Margins: exact, rounded down, signed (<= 0: the "
+                 "condition fails); (>=): condition 3's\nprune radius bounds the pairs not computed. delta: relative "
+                 "input uncertainty.\n\n");
+    rep.add_table(t);
+    rep.add_gallery("The gallery's contours (failsafe, graham-fortune): curves blue, control hulls grey, offending "
+                    "curves red (condition 1), orange (2), magenta (3)",
+                    std::move(pictures));
+    std::string counts;
+    for (const auto& [v, n] : verdicts) counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " + v;
+    rep.add_headline("Contour gallery (" + std::to_string(gallery.size()) + " contours, failsafe)", counts);
     rep.json["gallery"] = rows;
   }
 
@@ -134,37 +150,38 @@ Section_report extrusion_section(const Experiment_context& ctx) {
     for (const Case& c : cases) {
       ctx.progress("kernels x algorithms: " + c.name);
       for (const auto& a : hull_algorithm_names())
-        for (const auto& k : kernel_entries()) {
-          if (a == "cgal" && !k.name.starts_with("cgal-")) continue;
+        for (const auto& k : kernel_registry()) {
+          if (a == "cgal" && !k.cgal) continue;
           const Extrusion_options o = options_of(c);
           double time_s = 0;
           const Extrusion_report r = run_extrusion(a, k.name, c.contour, o, &time_s, ctx.min_timing_seconds / 10);
-          check_expectation(c, k.name + "/" + a, r);
-          t.add_row({c.name, k.name, a, std::string(to_string(r.verdict)), margin_text(r.conditions[0]),
+          check_expectation(c, k.label() + "/" + a, r);
+          t.add_row({c.name, k.label(), a, std::string(to_string(r.verdict)), margin_text(r.conditions[0]),
                      margin_text(r.conditions[1]), margin_text(r.conditions[2]), std::to_string(r.uncertain_answers),
                      std::to_string(r.non_convex_hulls), extrusion_measure_text(r.max_hull_backward_error),
                      format_g(time_s * 1e3, 3) + " ms"});
           Json j;
           j["contour"] = c.name;
-          j["kernel"] = k.name;
+          j["kernel"] = k.label();
           j["algorithm"] = a;
           j["verdict"] = to_string(r.verdict);
-          j["min_margins"] = Json::array({extrusion_measure_json(r.conditions[0].min_margin),
-                                          extrusion_measure_json(r.conditions[1].min_margin),
-                                          extrusion_measure_json(r.conditions[2].min_margin)});
+          j["min_margins"] = Json::array({io::json_measure(r.conditions[0].min_margin),
+                                          io::json_measure(r.conditions[1].min_margin),
+                                          io::json_measure(r.conditions[2].min_margin)});
           j["offending_total"] = r.offending_total;
           j["uncertain_answers"] = r.uncertain_answers;
           j["non_convex_hulls"] = r.non_convex_hulls;
           j["hull_failures"] = r.hull_failures;
-          j["max_hull_backward_error"] = extrusion_measure_json(r.max_hull_backward_error);
+          j["max_hull_backward_error"] = io::json_measure(r.max_hull_backward_error);
           j["time_s"] = time_s;
           rows.push_back(j);
         }
       t.add_rule();
     }
-    rep.text += "Every kernel and hull algorithm. A naive kernel may return a hull that is not the exact one; "
-                "its exact backward-error\ncertificate then enters the computation error, so the verdict degrades to "
-                "'uncertain' but never certifies wrongly.\n\n" + t.str() + "\n";
+    rep.add_note("Every kernel and hull algorithm. A naive kernel may return a hull that is not the exact one; "
+                 "its exact backward-error\ncertificate then enters the computation error, so the verdict degrades to "
+                 "'uncertain' but never certifies wrongly.\n\n");
+    rep.add_table(t);
     rep.json["kernels"] = rows;
   }
 
@@ -187,6 +204,9 @@ Section_report extrusion_section(const Experiment_context& ctx) {
           o.prune = prune;
           double time_s = 0;
           const Extrusion_report r = run_extrusion(a, k, c, o, &time_s);
+          if (prune && k == "failsafe" && M == sizes.back())
+            rep.add_headline("Largest circle chain checked (M = " + std::to_string(M) + ", failsafe, pruned)",
+                             std::string(to_string(r.verdict)) + " in " + format_g(time_s, 3) + " s");
           if (r.verdict != Extrusion_verdict::certified)
             rep.failures.push_back("circle M=" + std::to_string(M) + " not certified by " + k + "/" + a);
           t.add_row({std::to_string(M), k, a, prune ? "yes" : "no", std::string(to_string(r.verdict)),
@@ -198,8 +218,9 @@ Section_report extrusion_section(const Experiment_context& ctx) {
         }
       }
     }
-    rep.text += "Scaling: circle chains of M cubics, relative uncertainty 1e-9. With the prune, condition 3 computes "
-                "O(M) pairs;\nwithout it M(M-3)/2.\n\n" + t.str();
+    rep.add_note("Scaling: circle chains of M cubics, relative uncertainty 1e-9. With the prune, condition 3 computes "
+                 "O(M) pairs;\nwithout it M(M-3)/2.\n\n");
+    rep.add_table(t);
     rep.json["scaling"] = rows;
   }
   return rep;

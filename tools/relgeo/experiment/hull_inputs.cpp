@@ -1,17 +1,14 @@
-// tools/relgeo/hull_inputs.cpp
-#include "hull_inputs.h"
+// tools/relgeo/experiment/hull_inputs.cpp
+#include "experiment/hull_inputs.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 
-#include "hull_runs.h"
+#include "commands/hull/facade.h"
+#include "relgeo/error/convex_polygon.h"
 #include "relgeo/error/hull_error.h"
-#include "relgeo/hull/graham_incremental.h"
-#include "relgeo/hull/monotone_chain.h"
-#include "relgeo/kernel/filtered_exact_kernel.h"
-#include "relgeo/kernel/naive_kernel.h"
 
 namespace relgeo::tool {
 
@@ -66,14 +63,15 @@ Hull_input kettner_construction_input(Kettner_failure failure, std::uint64_t bas
       pts.push_back({x, y});
     }
     pts.insert(pts.end(), outer.begin(), outer.end());
-    const auto r = graham_incremental<Naive_kernel<double>>(pts);
+    const Hull_run r = run_hull("graham-incremental", "double", pts);
+    const bool ok = r.status == Hull_status::ok;
     bool hit = false;
     if (failure == Kettner_failure::non_termination) {
-      hit = !r.ok();
-    } else if (r.ok()) {
+      hit = !ok;
+    } else if (ok) {
       const bool convex = is_ccw_strictly_convex_polygon(points_at(pts, r.indices));
       if (failure == Kettner_failure::non_convex) hit = !convex;
-      else hit = convex && r.indices != monotone_chain<Filtered_exact_kernel>(pts).indices;
+      else hit = convex && r.indices != run_hull("monotone-chain", "filtered", pts).indices;
     }
     if (!hit) continue;
     in.seed = seed;

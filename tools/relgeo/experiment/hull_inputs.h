@@ -1,4 +1,4 @@
-// tools/relgeo/hull_inputs.h — the point sets of the experiment's hull
+// tools/relgeo/experiment/hull_inputs.h — the point sets of the experiment's hull
 // section: the classroom example A1, Kettner et al.'s failure construction,
 // and families of near-degenerate inputs. Deterministic: std::mt19937_64 and
 // doubles built from its integers with + - * / only (no std::uniform_real_

@@ -1,40 +1,32 @@
-// tools/relgeo/experiment_kernels.cpp — the "kernels" section of `relgeo
+// tools/relgeo/experiment/kernels.cpp — the "kernels" section of `relgeo
 // experiment`: every kernel of the tool on
 //  (1) the three orientation grids of Kettner et al. (SPEC Sec. 3.1), with a
 //      picture per kernel and grid;
 //  (2) the standard orientation_2 / orientation_3 workloads: wrong answers
 //      against the exact signs, rate of `uncertain`, time per predicate.
 #include <cstddef>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "experiment.h"
-#include "kernel_names.h"
-#include "kernel_runs.h"
-#include "png_writer.h"
+#include "commands/orient_grid/facade.h"
+#include "commands/orient_grid/picture.h"
+#include "commands/orient_grid/report.h"
+#include "experiment/section.h"
+#include "experiment/workloads.h"
+#include "kernels/registry.h"
 #include "relgeo/analysis/predicate_workloads.h"
 #include "relgeo/analysis/sign_tally.h"
-#include "tool_common.h"
 
 namespace relgeo::tool {
 
 namespace {
 
+using io::Json;
+
 constexpr int grid_size = 256;
 constexpr int grid_scale = 2;
-
-/// Adds the counts of a tally to a JSON record (`cases_key`: "cases" or "cells").
-void add_tally(Json& j, const analysis::Sign_tally& t, const char* cases_key) {
-  j[cases_key] = t.cases;
-  j["wrong"] = t.wrong();
-  j["plus_to_zero"] = t.plus_to_zero;
-  j["minus_to_zero"] = t.minus_to_zero;
-  j["zero_to_sign"] = t.zero_to_sign;
-  j["inversions"] = t.inversions;
-  j["uncertain"] = t.uncertain;
-  j["correct"] = t.correct;
-}
 
 std::string rate_text(double rate) {
   if (rate == 0) return "0";
@@ -47,66 +39,76 @@ std::string wrong_text(std::size_t wrong, bool certified) {
   return std::to_string(wrong) + (certified && wrong > 0 ? " !" : "");
 }
 
+/// Headline figures gathered while the section runs.
+struct Headline_figures {
+  std::map<std::string, std::size_t> grid_a_wrong;  ///< kernel -> wrong answers on grid a
+  std::size_t certified_wrong = 0, certified_answers = 0;
+  std::map<std::string, double> ns_orientation_2;  ///< kernel -> mean ns per orientation_2
+};
+
 // ---- (1) the grids ----------------------------------------------------------
 
-void run_grids(const Experiment_context& ctx, const std::vector<Kernel_info>& kernels,
-               Section_report& rep) {
+void run_grids(const Experiment_context& ctx, const std::vector<Kernel_entry>& kernels, Section_report& rep,
+               Headline_figures& figures) {
   const std::filesystem::path dir = ctx.section_dir();
   Json records = Json::array();
-  std::string text;
   for (const auto& triple : analysis::kettner_grid_triples()) {
-    Text_table tab({"kernel", "certified", "wrong", "plus_to_zero", "minus_to_zero",
-                    "zero_to_sign", "inversions", "uncertain", "correct"});
+    std::vector<std::string> header = {"kernel", "certified"};
+    for (auto& h : tally_header()) header.push_back(h);
+    Text_table tab(header);
+    std::vector<Picture> pictures;
     for (const auto& k : kernels) {
-      ctx.progress("grid " + triple.name + ": " + k.name);
+      ctx.progress("grid " + triple.name + ": " + k.label());
       const auto g = evaluate_grid(k.name, triple, grid_size);
       const auto& t = g.tally;
-      const std::filesystem::path png = dir / ("grid_" + triple.name + "_" + k.name + ".png");
-      write_png(png.string(), orientation_grid_image(g.answers, g.exact, g.size, grid_scale));
-      tab.add_row({k.name, k.certified ? "yes" : "no", wrong_text(t.wrong(), k.certified),
-                   std::to_string(t.plus_to_zero), std::to_string(t.minus_to_zero),
-                   std::to_string(t.zero_to_sign), std::to_string(t.inversions),
-                   std::to_string(t.uncertain), std::to_string(t.correct)});
+      const std::filesystem::path png = dir / ("grid_" + triple.name + "_" + k.label() + ".png");
+      io::write_png(png.string(), orientation_grid_image(g.answers, g.exact, g.size, grid_scale));
+      pictures.push_back({ctx.relative(png), k.label() + ": " + std::to_string(t.wrong()) + " wrong" +
+                                                 (t.uncertain ? ", " + std::to_string(t.uncertain) + " uncertain" : "")});
+      std::vector<std::string> row = {k.label(), k.certified ? "yes" : "no"};
+      for (auto& c : tally_cells(t, k.certified)) row.push_back(std::move(c));
+      tab.add_row(std::move(row));
       Json r;
       r["triple"] = triple.name;
-      r["kernel"] = k.name;
+      r["kernel"] = k.label();
       r["certified"] = k.certified;
       r["size"] = g.size;
-      add_tally(r, t, "cells");
+      add_tally_json(r, t, "cells");
       r["png"] = ctx.relative(png);
       records.push_back(std::move(r));
+      if (triple.name == "a") figures.grid_a_wrong[k.label()] = t.wrong();
+      if (k.certified) figures.certified_wrong += t.wrong(), figures.certified_answers += t.cases;
       if (k.certified && t.wrong() > 0)
-        rep.failures.push_back("soundness violation: certified kernel " + k.name + " gave " +
+        rep.failures.push_back("soundness violation: certified kernel " + k.label() + " gave " +
                                std::to_string(t.wrong()) + " wrong answers on grid " + triple.name);
     }
-    text += "Orientation grid " + triple.name + ": p = " + format_point_17(triple.px, triple.py) +
-            ", q = " + format_point_17(triple.qx, triple.qy) + ", r = " +
-            format_point_17(triple.rx, triple.ry) + "\n" + std::to_string(grid_size) + " x " +
-            std::to_string(grid_size) + " cells p + (X, Y) * 2^-53; pictures " +
-            ctx.relative(dir) + "/grid_" + triple.name + "_<kernel>.png\n\n" + tab.str() + "\n";
+    rep.add_note("Orientation grid " + triple.name + ": p = " + format_point_17(triple.px, triple.py) + ", q = " +
+                 format_point_17(triple.qx, triple.qy) + ", r = " + format_point_17(triple.rx, triple.ry) + "\n" +
+                 std::to_string(grid_size) + " x " + std::to_string(grid_size) + " cells p + (X, Y) * 2^-53; pictures " +
+                 ctx.relative(dir) + "/grid_" + triple.name + "_<kernel>.png\n\n");
+    rep.add_table(tab);
+    rep.add_gallery("Grid " + triple.name + " under every kernel (" + orientation_grid_legend + ")", std::move(pictures));
   }
   Json triples = Json::array();
   for (const auto& t : analysis::kettner_grid_triples()) {
     Json j;
     j["name"] = t.name;
-    j["p"] = json_point(t.px, t.py);
-    j["q"] = json_point(t.qx, t.qy);
-    j["r"] = json_point(t.rx, t.ry);
+    j["p"] = io::json_point(t.px, t.py);
+    j["q"] = io::json_point(t.qx, t.qy);
+    j["r"] = io::json_point(t.rx, t.ry);
     triples.push_back(std::move(j));
   }
   rep.json["grid_size"] = grid_size;
   rep.json["grid_triples"] = std::move(triples);
   rep.json["grids"] = std::move(records);
-  rep.text += text;
 }
 
 // ---- (2) the workloads --------------------------------------------------------
 
 template <class Case, class Measure>
-void run_workloads(const Experiment_context& ctx, const std::vector<Kernel_info>& kernels,
-                   const std::string& predicate,
-                   const std::vector<analysis::Workload<Case>>& workloads, Measure measure,
-                   Json& records, Section_report& rep) {
+void run_workloads(const Experiment_context& ctx, const std::vector<Kernel_entry>& kernels,
+                   const std::string& predicate, const std::vector<analysis::Workload<Case>>& workloads,
+                   Measure measure, Json& records, Section_report& rep, Headline_figures& figures) {
   std::vector<std::vector<Certified_sign>> exact;
   for (const auto& w : workloads) {
     ctx.progress(predicate + ": exact signs of workload " + w.name);
@@ -130,10 +132,10 @@ void run_workloads(const Experiment_context& ctx, const std::vector<Kernel_info>
   tab.set_groups(groups);
 
   for (const auto& k : kernels) {
-    ctx.progress(predicate + ": " + k.name);
+    ctx.progress(predicate + ": " + k.label());
     const std::size_t used = k.slow ? n_slow : n;
     const bool subset = used < n;
-    const std::string label = k.name + (subset ? " *" : "");
+    const std::string label = k.label() + (subset ? " *" : "");
     std::vector<std::string> row = {label, k.certified ? "yes" : "no", std::to_string(used)};
     std::vector<std::string> time_row = {label};
     analysis::Sign_tally all;
@@ -149,51 +151,70 @@ void run_workloads(const Experiment_context& ctx, const std::vector<Kernel_info>
       time_row.push_back(format_fixed(r.ns_per_predicate, 1));
       Json j;
       j["predicate"] = predicate;
-      j["kernel"] = k.name;
+      j["kernel"] = k.label();
       j["certified"] = k.certified;
       j["workload"] = workloads[i].name;
       j["subset"] = subset;  // true: only the first `cases` cases of the workload
-      add_tally(j, r.tally, "cases");
+      add_tally_json(j, r.tally, "cases");
       j["uncertain_rate"] = r.tally.uncertain_rate();
       j["ns_per_predicate"] = r.ns_per_predicate;
       j["timed_evaluations"] = r.timed_evaluations;
       records.push_back(std::move(j));
       if (k.certified && r.tally.wrong() > 0)
-        rep.failures.push_back("soundness violation: certified kernel " + k.name + " gave " +
-                               std::to_string(r.tally.wrong()) + " wrong answers on " + predicate +
-                               " workload " + workloads[i].name);
+        rep.failures.push_back("soundness violation: certified kernel " + k.label() + " gave " +
+                               std::to_string(r.tally.wrong()) + " wrong answers on " + predicate + " workload " +
+                               workloads[i].name);
     }
+    const double mean_ns = workloads.empty() ? 0.0 : ns_sum / double(workloads.size());
+    if (k.certified) figures.certified_wrong += all.wrong(), figures.certified_answers += all.cases;
+    if (predicate == "orientation_2") figures.ns_orientation_2[k.label()] = mean_ns;
     row.insert(row.end(), {wrong_text(all.wrong(), k.certified), rate_text(all.uncertain_rate())});
-    time_row.push_back(format_fixed(workloads.empty() ? 0.0 : ns_sum / double(workloads.size()), 1));
+    time_row.push_back(format_fixed(mean_ns, 1));
     tab.add_row(std::move(row));
     time_tab.add_row(std::move(time_row));
   }
   const std::string subset_note =
-      n_slow < n ? "* slow kernel: only the first " + std::to_string(n_slow) +
-                       " cases of each workload\n"
-                 : std::string();
-  rep.text += predicate + ", standard workloads of " + std::to_string(n) +
-              " cases: wrong = definite answers that differ from the exact sign, uncertain = "
-              "rate of 'uncertain' answers\n" + subset_note +
-              "! = soundness violation (a certified kernel answered wrong)\n\n" + tab.str() +
-              "\n" + predicate +
-              ", time per predicate in ns (points built beforehand; fastest pass of a loop "
-              "repeated for >= " + format_g(ctx.min_timing_seconds * 1000, 3) + " ms)\n" + subset_note + "\n" +
-              time_tab.str() + "\n";
+      n_slow < n ? "* slow kernel: only the first " + std::to_string(n_slow) + " cases of each workload\n" : std::string();
+  rep.add_note(predicate + ", standard workloads of " + std::to_string(n) +
+               " cases: wrong = definite answers that differ from the exact sign, uncertain = "
+               "rate of 'uncertain' answers\n" + subset_note +
+               "! = soundness violation (a certified kernel answered wrong)\n\n");
+  rep.add_table(tab);
+  rep.add_note(predicate +
+               ", time per predicate in ns (points built beforehand; fastest pass of a loop "
+               "repeated for >= " + format_g(ctx.min_timing_seconds * 1000, 3) + " ms)\n" + subset_note + "\n");
+  rep.add_table(time_tab);
+}
+
+void add_headlines(const Headline_figures& f, Section_report& rep) {
+  const auto wrong = [&](const char* k) {
+    const auto it = f.grid_a_wrong.find(k);
+    return it == f.grid_a_wrong.end() ? std::string("-") : std::to_string(it->second);
+  };
+  rep.add_headline("Grid a (Kettner et al.), wrong signs of " + std::to_string(grid_size * grid_size) + " cells",
+                   "double " + wrong("double") + ", float " + wrong("float") + ", long-double " + wrong("long-double") +
+                       ", cgal-sc " + wrong("cgal-sc"));
+  rep.add_headline("Certified kernels, wrong answers on every grid and workload",
+                   std::to_string(f.certified_wrong) + " of " + std::to_string(f.certified_answers));
+  const auto ns = [&](const char* k) {
+    const auto it = f.ns_orientation_2.find(k);
+    return it == f.ns_orientation_2.end() ? std::string("-") : format_fixed(it->second, 1) + " ns";
+  };
+  rep.add_headline("orientation_2, mean time per predicate",
+                   "double " + ns("double") + ", filtered " + ns("filtered") + ", interval " + ns("interval") +
+                       ", exact " + ns("exact") + ", cgal-epick " + ns("cgal-epick"));
 }
 
 }  // namespace
 
 Section_report kernels_section(const Experiment_context& ctx) {
   Section_report rep;
-  std::vector<Kernel_info> kernels;
+  const std::vector<Kernel_entry>& kernels = kernel_registry();
   Json kernel_list = Json::array();
-  for (const auto& e : kernel_entries()) {
-    kernels.push_back(kernel_info(e.name));
-    const auto& k = kernels.back();
+  for (const auto& k : kernels) {
     Json j;
-    j["name"] = k.name;
-    j["model"] = k.model;
+    j["name"] = k.label();
+    j["model"] = k.name;
     j["certified"] = k.certified;
     j["exact_predicates"] = k.exact_predicates;
     j["slow"] = k.slow;
@@ -202,16 +223,18 @@ Section_report kernels_section(const Experiment_context& ctx) {
   rep.json["kernels"] = std::move(kernel_list);
   rep.json["slow_kernel_cases"] = std::min(ctx.workload_size, ctx.slow_kernel_cases);
 
-  run_grids(ctx, kernels, rep);
+  Headline_figures figures;
+  run_grids(ctx, kernels, rep, figures);
 
   Json records = Json::array();
   run_workloads<analysis::Orientation_2_case>(ctx, kernels, "orientation_2",
                                               analysis::standard_workloads_2(ctx.workload_size),
-                                              &measure_orientation_2, records, rep);
+                                              &measure_orientation_2, records, rep, figures);
   run_workloads<analysis::Orientation_3_case>(ctx, kernels, "orientation_3",
                                               analysis::standard_workloads_3(ctx.workload_size),
-                                              &measure_orientation_3, records, rep);
+                                              &measure_orientation_3, records, rep, figures);
   rep.json["workloads"] = std::move(records);
+  add_headlines(figures, rep);
   return rep;
 }
 

@@ -1,4 +1,4 @@
-// tools/relgeo/experiment_linear.cpp — the "linear" section of `relgeo
+// tools/relgeo/experiment/linear.cpp — the "linear" section of `relgeo
 // experiment` (thesis Sec. 3.2):
 //  (1) the thesis' 2x2 example under every method, and without pivoting
 //      under every scalar;
@@ -17,24 +17,18 @@
 #include <string>
 #include <vector>
 
-#include "experiment.h"
-#include "linear_runs.h"
+#include "commands/linsolve/facade.h"
+#include "experiment/section.h"
 #include "relgeo/linear/test_problems.h"
-#include "tool_common.h"
 
 namespace relgeo::tool {
 
 namespace {
 
-Json measure(double v) {
-  if (std::isinf(v)) return "inf";
-  return v;
-}
-std::string text(double v, int digits = 3) {
-  if (std::isinf(v)) return "inf";
-  if (v == 0) return "0";
-  return format_g(v, digits);
-}
+using io::Json;
+
+Json measure(double v) { return io::json_measure(v); }
+std::string text(double v, int digits = 3) { return measure_text(v, digits); }
 Json run_json(const Linear_run& r) {
   Json j;
   j["method"] = r.method;
@@ -72,15 +66,20 @@ Section_report linear_section(const Experiment_context& ctx) {
       Json j = run_json(r);
       j["x"] = r.x;
       rows.push_back(j);
+      if (sc == "double" && (m == "none" || m == "partial"))
+        rep.add_headline("Thesis example, " + m + " pivoting in double",
+                         "x = (" + format_17(r.x[0]) + ", " + format_17(r.x[1]) + "), backward error " +
+                             text(r.errors.normwise_backward_error) + ", forward error " + text(*r.errors.forward_error));
       if (m == "none" && sc == "double" && !(r.x[0] == 0 && r.x[1] == 1))
         rep.failures.push_back("thesis example: no pivoting in double did not return (0, 1)");
       if (m == "partial" && sc == "double" && !(r.x[0] == 1 && r.x[1] == 1))
         rep.failures.push_back("thesis example: partial pivoting did not return (1, 1)");
     }
-    rep.text += "The thesis' example (Sec. 3.2): A = [[phi, 1], [1, 0]], b = [1, 1], phi = 0.1*0.1 - 0.01 = 2^-59 in\n"
-                "double; exact solution (1, 1 - phi), condition number " + text(ref.condition().value, 17) +
-                " (exact).\nNo pivoting: backward error 1/2 on a perfectly conditioned problem — the algorithm, not "
-                "the data, is at fault.\n\n" + t.str() + "\n";
+    rep.add_note("The thesis' example (Sec. 3.2): A = [[phi, 1], [1, 0]], b = [1, 1], phi = 0.1*0.1 - 0.01 = 2^-59 in\n"
+                 "double; exact solution (1, 1 - phi), condition number " + text(ref.condition().value, 17) +
+                 " (exact).\nNo pivoting: backward error 1/2 on a perfectly conditioned problem — the algorithm, not "
+                 "the data, is at fault.\n\n");
+    rep.add_table(t);
     rep.json["thesis_example"] = {{"phi", s.a(0, 0)}, {"condition_number", ref.condition().value}, {"runs", rows}};
   }
 
@@ -110,6 +109,10 @@ Section_report linear_section(const Experiment_context& ctx) {
         fwd.push_back(text(*r.errors.forward_error));
         runs.push_back(run_json(r));
         if (m == "partial") eta_partial = r.errors.normwise_backward_error, omega_partial = r.errors.componentwise_backward_error;
+        if (m == "partial" && n == 12)
+          rep.add_headline("Hilbert n = 12 in double, partial pivoting (kappa " + text(ref.condition().value) + ")",
+                           "backward error " + text(r.errors.normwise_backward_error) + ", forward error " +
+                               text(*r.errors.forward_error));
         if (m != "none" && r.errors.normwise_backward_error > 10 * n * u)
           rep.failures.push_back("Hilbert n=" + std::to_string(n) + ": " + m + " has backward error " +
                                  text(r.errors.normwise_backward_error) + " > 10 n u");
@@ -121,9 +124,10 @@ Section_report linear_section(const Experiment_context& ctx) {
       j["runs"] = runs;
       rows.push_back(j);
     }
-    rep.text += "Hilbert matrices H_n and b = H_n * ones, stored in double (measures against the stored system's "
-                "exact solution).\nStable methods: backward error at the level of u = 1.1e-16 for every n, forward "
-                "error growing with kappa\n(bounded by 2 kappa eta to first order).\n\n" + t.str() + "\n";
+    rep.add_note("Hilbert matrices H_n and b = H_n * ones, stored in double (measures against the stored system's "
+                 "exact solution).\nStable methods: backward error at the level of u = 1.1e-16 for every n, forward "
+                 "error growing with kappa\n(bounded by 2 kappa eta to first order).\n\n");
+    rep.add_table(t);
     rep.json["hilbert_double"] = rows;
   }
 
@@ -173,10 +177,11 @@ Section_report linear_section(const Experiment_context& ctx) {
       t.add_row(row);
       rows.push_back(j);
     }
-    rep.text += "Precision needed: the exact Hilbert system H_n x = H_n * ones (x = ones), data correctly rounded "
-                "to MPFR at BITS,\npartial pivoting; the smallest BITS of the sweep (" +
-                std::to_string(linear_mpfr_bits().front()) + ".." + std::to_string(linear_mpfr_bits().back()) +
-                ") whose forward error is <= the target.\nRule of thumb: bits ~ log2(kappa / target).\n\n" + t.str() + "\n";
+    rep.add_note("Precision needed: the exact Hilbert system H_n x = H_n * ones (x = ones), data correctly rounded "
+                 "to MPFR at BITS,\npartial pivoting; the smallest BITS of the sweep (" +
+                 std::to_string(linear_mpfr_bits().front()) + ".." + std::to_string(linear_mpfr_bits().back()) +
+                 ") whose forward error is <= the target.\nRule of thumb: bits ~ log2(kappa / target).\n\n");
+    rep.add_table(t);
     rep.json["hilbert_precision"] = rows;
   }
 
@@ -219,8 +224,9 @@ Section_report linear_section(const Experiment_context& ctx) {
       }
       t.add_rule();
     }
-    rep.text += "Random systems (entries uniform in [-1, 1]) in double: every method, its backward errors and "
-                "time per solve (fastest of repeated runs).\n\n" + t.str();
+    rep.add_note("Random systems (entries uniform in [-1, 1]) in double: every method, its backward errors and "
+                 "time per solve (fastest of repeated runs).\n\n");
+    rep.add_table(t);
     rep.json["random_double"] = rows;
   }
   return rep;

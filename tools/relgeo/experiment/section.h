@@ -1,26 +1,30 @@
-// tools/relgeo/experiment.h — the framework of `relgeo experiment`.
+// tools/relgeo/experiment/section.h — the framework of `relgeo experiment`.
 //
 // The experiment is a list of sections run in order. A section is one
 // function: it receives the context (output folder, size of the run, a
 // progress callback), writes its pictures under `ctx.section_dir()`, and
 // returns its report: a JSON document (written to DIR/<name>.json by the
-// framework) and the text tables printed on stdout. Failures it lists (e.g. a
-// soundness violation) make the tool exit with 1 after every section ran.
+// framework), its notes, tables and pictures (printed on stdout as text and
+// laid out in DIR/index.html), and its headline figures (first on the HTML
+// page). Failures it lists (e.g. a soundness violation) make the tool exit
+// with 1 after every section ran.
 //
 // To add a section:
-//   1. write `Section_report my_section(const Experiment_context&)` in its own
-//      experiment_<name>.cpp (and add the file to CMakeLists.txt),
+//   1. write `Section_report my_section(const Experiment_context&)` in
+//      experiment/<name>.cpp (and add the file to CMakeLists.txt),
 //   2. declare it below and add one line to `experiment_sections`.
 #pragma once
 
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "json_output.h"
+#include "cli/text.h"
+#include "relgeo/io/json.h"
 
 namespace relgeo::tool {
 
@@ -42,10 +46,47 @@ struct Experiment_context {
   std::string relative(const std::filesystem::path& path) const;
 };
 
+/// A picture a section wrote, for the HTML report.
+struct Picture {
+  std::string file;     ///< relative to DIR (Experiment_context::relative)
+  std::string caption;  ///< short: the kernel, the run
+};
+
+/// One piece of a section's report, in order: a note, a table or a gallery.
+struct Report_block {
+  std::string note;                   ///< text (line breaks kept)
+  std::optional<Text_table> table;
+  std::string gallery_title;          ///< with `pictures`
+  std::vector<Picture> pictures;
+};
+
+/// A figure worth reading first: "label: value".
+struct Headline {
+  std::string label, value;
+};
+
 struct Section_report {
-  Json json;                          ///< the section's numbers (DIR/<section>.json)
-  std::string text;                   ///< tables for stdout (--format text)
+  io::Json json;                      ///< the section's numbers (DIR/<section>.json)
+  std::string text;                   ///< notes and tables for stdout (--format text)
+  std::vector<Report_block> blocks;   ///< the same notes and tables, and the pictures (index.html)
+  std::vector<Headline> headlines;    ///< first on the HTML page
   std::vector<std::string> failures;  ///< one line each; non-empty -> exit 1
+
+  /// A note: printed as it is, shown as a paragraph.
+  void add_note(const std::string& note) {
+    text += note;
+    blocks.push_back({note, std::nullopt, {}, {}});
+  }
+  /// A table: printed aligned (followed by a blank line), shown as an HTML table.
+  void add_table(const Text_table& table) {
+    text += table.str() + "\n";
+    blocks.push_back({{}, table, {}, {}});
+  }
+  /// Pictures: on the HTML page only (stdout names their folder in a note).
+  void add_gallery(const std::string& title, std::vector<Picture> pictures) {
+    if (!pictures.empty()) blocks.push_back({{}, std::nullopt, title, std::move(pictures)});
+  }
+  void add_headline(const std::string& label, const std::string& value) { headlines.push_back({label, value}); }
 };
 
 using Section_function = Section_report (*)(const Experiment_context&);
@@ -58,23 +99,23 @@ struct Experiment_section {
 
 // ---- the sections ------------------------------------------------------------
 /// Kernel comparison: Kettner grids and predicate workloads under every kernel.
-Section_report kernels_section(const Experiment_context& ctx);  // experiment_kernels.cpp
+Section_report kernels_section(const Experiment_context& ctx);  // experiment/kernels.cpp
 
 /// Planar convex hulls: every algorithm under every kernel on the classroom
 /// example, Kettner et al.'s construction and near-degenerate families.
-Section_report hull_section(const Experiment_context& ctx);  // experiment_hull.cpp
+Section_report hull_section(const Experiment_context& ctx);  // experiment/hull.cpp
 
 /// Linear equations (thesis Sec. 3.2): the thesis' example, Hilbert matrices,
 /// precision sweeps, relgeo's elimination against Eigen's LU.
-Section_report linear_section(const Experiment_context& ctx);  // experiment_linear.cpp
+Section_report linear_section(const Experiment_context& ctx);  // experiment/linear.cpp
 
 /// Extruded objects (thesis Sec. 3.4.1): certified well-formedness of contours
 /// under every kernel and hull algorithm, and the checker's scaling.
-Section_report extrusion_section(const Experiment_context& ctx);  // experiment_extrusion.cpp
+Section_report extrusion_section(const Experiment_context& ctx);  // experiment/extrusion.cpp
 
 /// Loop subdivision (thesis Sec. 5.2, 5.4.1): distances of control and limit
 /// meshes to the exact limit surface per level and kernel, error bounds.
-Section_report subdivision_section(const Experiment_context& ctx);  // experiment_subdivision.cpp
+Section_report subdivision_section(const Experiment_context& ctx);  // experiment/subdivision.cpp
 
 /// Every section, in run order.
 inline constexpr Experiment_section experiment_sections[] = {

@@ -1,4 +1,4 @@
-// tools/relgeo/experiment_subdivision.cpp — the "subdivision" section of
+// tools/relgeo/experiment/subdivision.cpp — the "subdivision" section of
 // `relgeo experiment` (thesis Sec. 5.2, 5.4.1): for two control meshes (an
 // icosahedron: valence 5 everywhere; a creased box with corners, jittered so
 // that its sides curve) and levels 0..4, under the kernels double, failsafe,
@@ -21,10 +21,10 @@
 #include <string>
 #include <vector>
 
-#include "experiment.h"
-#include "subdivision_commands.h"
-#include "subdivision_render.h"
-#include "tool_common.h"
+#include "commands/subdivide/facade.h"
+#include "commands/subdivide/report.h"
+#include "experiment/section.h"
+#include "experiment/subdivision_render.h"
 
 namespace relgeo::tool {
 
@@ -68,11 +68,13 @@ Mesh_double creased_box() {
   return m;
 }
 
-std::string g3(double v) { return v == 0 ? "0" : format_g(v, 3); }
+using io::Json;
+
+std::string g3(double v) { return measure_text(v, 3); }
 
 // The limit mesh coloured by the width of the tangent-plane bound per face
 // (log scale; the range goes to the section's JSON).
-Image bounds_picture(const Subdivision_result& r, Section_report& rep, const std::string& name) {
+io::Image bounds_picture(const Subdivision_result& r, Section_report& rep, const std::string& name) {
   Render_options ro;
   ro.face_values = r.face_width;
   double lo = INFINITY, hi = 0;
@@ -104,6 +106,9 @@ Section_report subdivision_section(const Experiment_context& ctx) {
     return true;
   };
   Json rows = Json::array();
+  std::vector<Picture> pictures;
+  long outside_total = 0;
+  double icosahedron_l2_limit = -1;
   Text_table t({"mesh", "L", "kernel", "faces", "d(control)", "d(limit)", "normal off.", "rounding", "basis",
                 "tangent", "direct", "thesis", "outside", "time s"});
   t.set_left_columns(3);
@@ -133,11 +138,9 @@ Section_report subdivision_section(const Experiment_context& ctx) {
         for (std::size_t k = 0; k < r.bounds.size(); ++k) {
           const auto& b = r.bounds[k];
           if (b.is_bound) outside += b.samples_outside;
+          if (b.is_bound && kernel != "float") outside_total += b.samples_outside;
           tight[k] = b.tightness_faces ? format_fixed(b.mean_tightness, 2) : "-";
-          jb[b.method] = {{"min_lower", b.min_lower},           {"max_upper", b.max_upper},
-                          {"mean_width", b.mean_width},         {"mean_tightness", b.mean_tightness},
-                          {"max_tightness", b.max_tightness},   {"tightness_faces", b.tightness_faces},
-                          {"samples_outside", b.samples_outside}, {"is_bound", b.is_bound}};
+          jb[b.method] = bound_json(b);
           // float: bounds computed in single precision miss samples by its
           // rounding (reported, expected of a naive kernel, not a failure)
           if (b.is_bound && b.samples_outside > 0 && kernel != "float")
@@ -162,18 +165,25 @@ Section_report subdivision_section(const Experiment_context& ctx) {
         j["bounds"] = jb;
         j["time_s"] = {{"subdivision", r.time_subdivision}, {"bounds", r.time_bounds}};
         rows.push_back(j);
+        if (name == "icosahedron" && level == 2 && kernel == "double") icosahedron_l2_limit = r.limit_distance;
         // Pictures from the double runs.
         if (kernel == "double") {
           const auto dir = ctx.section_dir();
+          const auto picture = [&](const std::string& file, const io::Image& image, const std::string& caption) {
+            io::write_png((dir / file).string(), image);
+            pictures.push_back({ctx.relative(dir / file), name + ": " + caption});
+          };
           if (level == 0) {
             Render_options ro;
             ro.wire = true;
-            write_png((dir / (name + "_control.png")).string(), render_mesh(r.refined, ro));
+            picture(name + "_control.png", render_mesh(r.refined, ro), "control mesh");
           }
-          if (level == 2) write_png((dir / (name + "_bounds_L2.png")).string(), bounds_picture(r, rep, name));
+          if (level == 2)
+            picture(name + "_bounds_L2.png", bounds_picture(r, rep, name),
+                    "level-2 limit mesh, width of the tangent-plane bound (log scale, blue small .. red large)");
           if (level == std::min(3u, max_level))
-            write_png((dir / (name + "_limit_L" + std::to_string(level) + ".png")).string(),
-                      render_mesh(r.limit, Render_options{}, &r.refined));
+            picture(name + "_limit_L" + std::to_string(level) + ".png", render_mesh(r.limit, Render_options{}, &r.refined),
+                    "limit mesh, level " + std::to_string(level));
         }
       }
       t.add_rule();
@@ -184,7 +194,7 @@ Section_report subdivision_section(const Experiment_context& ctx) {
       "distances in mesh units; d(control) is the level-k control mesh (level 0: the input); tightness = "
       "max(|lower|, |upper|) / sampled max offset per face, mean over faces with a nonzero offset; thesis = the "
       "construction as printed (not a bound); outside = samples outside the three bounds (must be 0)";
-  rep.text =
+  rep.add_note(
       "Loop limit meshes against the exact limit surface (thesis Sec. 5.2, 5.4.1): distances sampled by exact\n"
       "(GMP) evaluation at the dyadic points of every face (45 per face up to level 2, 15 beyond); rounding =\n"
       "max |limit vertex - exact limit vertex|; tightness = bound / sampled max normal offset (mean over faces;\n"
@@ -194,8 +204,14 @@ Section_report subdivision_section(const Experiment_context& ctx) {
       "section's minute (mpfr-53 to level 2; exact to level 2 on the creased box, level 0 on the icosahedron,\n"
       "whose valence-5 weights are 256-bit rationals).\n"
       "Pictures: DIR/subdivision/<mesh>_control.png, <mesh>_limit_L3.png, <mesh>_bounds_L2.png (tangent-plane\n"
-      "bound width per face, log colour scale blue..red).\n\n" +
-      t.str();
+      "bound width per face, log colour scale blue..red).\n\n");
+  rep.add_table(t);
+  rep.add_gallery("Control meshes, limit meshes and bound widths (kernel double)", std::move(pictures));
+  rep.add_headline("Samples of the exact limit surface outside a certified bound (all kernels but float)",
+                   std::to_string(outside_total));
+  if (icosahedron_l2_limit >= 0)
+    rep.add_headline("Icosahedron, level-2 limit mesh (double): largest distance to the exact limit surface",
+                     g3(icosahedron_l2_limit));
   return rep;
 }
 

@@ -1,5 +1,5 @@
-// tools/relgeo/subdivision_render.cpp
-#include "subdivision_render.h"
+// tools/relgeo/experiment/subdivision_render.cpp
+#include "experiment/subdivision_render.h"
 
 #include <algorithm>
 #include <array>
@@ -9,6 +9,9 @@
 namespace relgeo::tool {
 
 namespace {
+
+using io::Image;
+using io::Rgb;
 
 struct V3 {
   double x, y, z;
@@ -30,7 +33,7 @@ Rgb ramp(double t) {
 
 }  // namespace
 
-Image render_mesh(const Mesh_double& mesh, const Render_options& o, const Mesh_double* frame) {
+io::Image render_mesh(const Mesh_double& mesh, const Render_options& o, const Mesh_double* frame) {
   Image img{o.width, o.height, {}};
   img.pixels.assign(std::size_t(o.width) * o.height, Rgb{255, 255, 255});
   const double az = o.azimuth_deg * M_PI / 180, el = o.elevation_deg * M_PI / 180;

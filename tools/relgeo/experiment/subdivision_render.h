@@ -1,4 +1,4 @@
-// tools/relgeo/subdivision_render.h — a small orthographic renderer for the
+// tools/relgeo/experiment/subdivision_render.h — a small orthographic renderer for the
 // pictures of the subdivision experiment: flat shading, z-buffer, optional
 // wire frame, optional colour per face from a value (bound widths).
 #pragma once
@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "png_writer.h"
-#include "subdivision_commands.h"
+#include "commands/subdivide/facade.h"
+#include "relgeo/io/png.h"
 
 namespace relgeo::tool {
 
@@ -24,6 +24,6 @@ struct Render_options {
 
 /// The picture of a triangle mesh. `frame` (optional) fixes the view box so
 /// several meshes render at the same scale.
-Image render_mesh(const Mesh_double& mesh, const Render_options& options, const Mesh_double* frame = nullptr);
+io::Image render_mesh(const Mesh_double& mesh, const Render_options& options, const Mesh_double* frame = nullptr);
 
 }  // namespace relgeo::tool

@@ -1,61 +1,72 @@
-// tools/relgeo/kernel_dispatch.h — runtime kernel name -> kernel type.
+// tools/relgeo/kernels/dispatch.h — a kernel named at run time -> its type.
 //
-// Heavy: includes every kernel, CGAL's Epeck among them. Include it only in
-// the translation units that instantiate algorithms under every kernel
-// (grid_eval.cpp, workload_eval.cpp); everything else uses
-// kernel_names.h and the non-template functions of those units.
+// The compile firewall: a kernel type is named only in files called
+// dispatch*.cpp (and kernels/registry.cpp). Each includes this header, calls
+// with_kernel, and exposes a non-template function that takes the kernel's
+// name; commands and experiment sections call those functions and compile
+// without any kernel. A dispatch over every kernel includes
+// kernels/cgal_kernels.h as well; a dispatch over part of the list (Loop
+// subdivision: the kernels with constructions) names the part with an
+// `Admitted` policy and never completes the CGAL types.
 #pragma once
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Simple_cartesian.h>
-
+#include <cstddef>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
-#include "kernel_names.h"
-#include "relgeo/kernel.h"
-#include "relgeo/kernel/cgal_kernel.h"
-#include "tool_common.h"
+#include "cli/text.h"
+#include "kernels/list.h"
+#include "kernels/registry.h"
 
 namespace relgeo::tool {
 
-/// Calls f(K{}) with the kernel type K named `name`:
-///   float, double, long-double      Naive_kernel<T>
-///   failsafe                        Failsafe_kernel<double>
-///   interval                        Interval_kernel
-///   filtered                        Filtered_exact_kernel
-///   exact                           Exact_kernel
-///   mpfr-BITS                       Mpfr_kernel<BITS>, BITS in mpfr_bits
-///   cgal-sc, cgal-epick, cgal-epeck Cgal_kernel<Simple_cartesian<double> | Epick | Epeck>
-/// f must return the same type for every kernel. An unknown name (or BITS
-/// outside mpfr_bits) throws Usage_error listing the valid names.
-template <class F>
+/// The policy admitting every kernel of the list (include kernels/cgal_kernels.h).
+struct Every_kernel {
+  template <class K>
+  static constexpr bool admits = true;
+};
+
+namespace dispatch_internal {  // not "internal": that would hide relgeo::internal here
+
+template <class Admitted, std::size_t... I>
+constexpr std::size_t first_admitted(std::index_sequence<I...>) {
+  std::size_t first = kernel_count;
+  ((first == kernel_count && Admitted::template admits<kernel_at<I>> ? (first = I, 0) : 0), ...);
+  return first;
+}
+
+template <class Admitted, class R, std::size_t I, class F>
+R dispatch_from(const Kernel_entry& entry, F& f) {
+  if constexpr (I == kernel_count) {
+    throw Usage_error("kernel '" + entry.label() + "' is not available here");
+  } else {
+    if constexpr (Admitted::template admits<kernel_at<I>>) {
+      if (entry.index == I) return f(kernel_at<I>{});
+    }
+    return dispatch_from<Admitted, R, I + 1>(entry, f);
+  }
+}
+
+}  // namespace dispatch_internal
+
+/// Calls f(K{}) with the kernel type K of `entry` (f must return the same type
+/// for every admitted kernel). \throws Usage_error when `Admitted` does not
+/// admit the kernel.
+template <class Admitted = Every_kernel, class F>
+decltype(auto) with_kernel(const Kernel_entry& entry, F&& f) {
+  constexpr std::size_t first = dispatch_internal::first_admitted<Admitted>(std::make_index_sequence<kernel_count>{});
+  static_assert(first < kernel_count, "the policy admits no kernel");
+  using R = std::invoke_result_t<F&, kernel_at<first>>;
+  return dispatch_internal::dispatch_from<Admitted, R, 0>(entry, f);
+}
+
+/// The same for a kernel name (K::name() or its alias).
+/// \throws Usage_error for an unknown name (the message lists the valid ones).
+template <class Admitted = Every_kernel, class F>
 decltype(auto) with_kernel(std::string_view name, F&& f) {
-  validate_kernel_name(name);  // throws Usage_error with the list of names
-  if (name == "float") return std::forward<F>(f)(Naive_kernel<float>{});
-  if (name == "double") return std::forward<F>(f)(Naive_kernel<double>{});
-  if (name == "long-double") return std::forward<F>(f)(Naive_kernel<long double>{});
-  if (name == "failsafe") return std::forward<F>(f)(Failsafe_kernel<double>{});
-  if (name == "interval") return std::forward<F>(f)(Interval_kernel{});
-  if (name == "filtered") return std::forward<F>(f)(Filtered_exact_kernel{});
-  if (name == "exact") return std::forward<F>(f)(Exact_kernel{});
-  if (name == "mpfr-11") return std::forward<F>(f)(Mpfr_kernel<11>{});
-  if (name == "mpfr-24") return std::forward<F>(f)(Mpfr_kernel<24>{});
-  if (name == "mpfr-53") return std::forward<F>(f)(Mpfr_kernel<53>{});
-  if (name == "mpfr-64") return std::forward<F>(f)(Mpfr_kernel<64>{});
-  if (name == "mpfr-80") return std::forward<F>(f)(Mpfr_kernel<80>{});
-  if (name == "mpfr-106") return std::forward<F>(f)(Mpfr_kernel<106>{});
-  if (name == "mpfr-113") return std::forward<F>(f)(Mpfr_kernel<113>{});
-  if (name == "mpfr-128") return std::forward<F>(f)(Mpfr_kernel<128>{});
-  if (name == "mpfr-256") return std::forward<F>(f)(Mpfr_kernel<256>{});
-  static_assert(mpfr_bits.size() == 9, "keep with_kernel in step with mpfr_bits");
-  if (name == "cgal-sc") return std::forward<F>(f)(Cgal_kernel<CGAL::Simple_cartesian<double>>{});
-  if (name == "cgal-epick") return std::forward<F>(f)(Cgal_kernel<CGAL::Epick>{});
-  if (name == "cgal-epeck") return std::forward<F>(f)(Cgal_kernel<CGAL::Epeck>{});
-  // validate_kernel_name and this list disagree: a bug of the tool.
-  throw Usage_error("kernel '" + std::string(name) + "' is listed but not dispatched");
+  return with_kernel<Admitted>(find_kernel(name), std::forward<F>(f));
 }
 
 }  // namespace relgeo::tool

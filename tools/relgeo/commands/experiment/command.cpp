@@ -1,15 +1,16 @@
-// tools/relgeo/experiment_command.cpp — `relgeo experiment`: runs the
-// registered sections, writes DIR/<section>.json and DIR/experiment.json,
-// prints the tables (or one JSON document) on stdout.
+// tools/relgeo/commands/experiment/command.cpp — `relgeo experiment`: runs
+// the registered sections, writes DIR/<section>.json, DIR/experiment.json and
+// DIR/index.html, prints the tables (or one JSON document) on stdout.
+#include "commands/experiment/command.h"
+
 #include <algorithm>
 #include <chrono>
-#include <fstream>
 #include <ostream>
 #include <system_error>
 
-#include "commands.h"
-#include "experiment.h"
-#include "relgeo/core/errors.h"
+#include "commands/experiment/html_report.h"
+#include "experiment/section.h"
+#include "relgeo/io/text_file.h"
 
 namespace relgeo::tool {
 
@@ -35,6 +36,10 @@ std::string experiment_sections_help() {
   return s;
 }
 
+namespace {
+
+using io::Json;
+
 void validate_section_name(const std::string& name) {
   std::string names;
   for (const auto& sec : experiment_sections) {
@@ -44,18 +49,15 @@ void validate_section_name(const std::string& name) {
   throw Usage_error("unknown experiment section '" + name + "'; sections: " + names);
 }
 
-namespace {
-
 void write_text_file(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
-  f << text;
-  f.close();
-  if (!f) throw Usage_error("cannot write '" + path.string() + "'");
+  io::write_text_file(path.string(), text, "results file");
 }
 
 }  // namespace
 
-int run_experiment(const Experiment_options& o, std::ostream& out, std::ostream& err) {
+int run_experiment(const Experiment_options& o, Streams io) {
+  std::ostream& out = io.out;
+  std::ostream& err = io.err;
   for (const auto& s : o.sections) validate_section_name(s);
   if (o.output.empty()) throw Usage_error("--output: empty folder name");
   const std::filesystem::path dir(o.output);
@@ -86,6 +88,7 @@ int run_experiment(const Experiment_options& o, std::ostream& out, std::ostream&
   Json sections = Json::object();
   std::vector<std::string> failures;
   bool first = true;
+  std::vector<Html_section> html;
 
   for (const auto& sec : experiment_sections) {
     if (!o.sections.empty() &&
@@ -108,7 +111,7 @@ int run_experiment(const Experiment_options& o, std::ostream& out, std::ostream&
     j["time_s"] = t;
     for (auto& [k, v] : rep.json.items()) j[k] = v;
     j["failures"] = rep.failures;
-    write_text_file(dir / (ctx.section + ".json"), dump_json(j) + "\n");
+    write_text_file(dir / (ctx.section + ".json"), io::dump_json(j) + "\n");
     ctx.progress("done in " + format_fixed(t, 1) + " s, wrote " + (dir / (ctx.section + ".json")).string());
     for (const auto& f : rep.failures) failures.push_back(ctx.section + ": " + f);
 
@@ -119,6 +122,7 @@ int run_experiment(const Experiment_options& o, std::ostream& out, std::ostream&
     }
     first = false;
     sections[ctx.section] = std::move(j);
+    html.push_back({ctx.section, std::string(sec.summary), t, std::move(rep)});
   }
   const double total = seconds_since(start);
   all["time_s"] = total;
@@ -126,14 +130,17 @@ int run_experiment(const Experiment_options& o, std::ostream& out, std::ostream&
   Json index = all;
   index["sections"] = Json::array();
   for (auto& [k, v] : sections.items()) index["sections"].push_back(k + ".json");
-  write_text_file(dir / "experiment.json", dump_json(index) + "\n");
+  write_text_file(dir / "experiment.json", io::dump_json(index) + "\n");
+  const Html_run run{o.quick, ctx.workload_size, total, failures};
+  write_text_file(dir / "index.html", html_report(run, html));
   all["sections"] = std::move(sections);
 
   if (o.format == Format::json) {
-    out << dump_json(all) << '\n';
+    out << io::dump_json(all) << '\n';
   } else {
     out << "\nexperiment: " << format_fixed(total, 1) << " s; results in " << dir.generic_string()
-        << "/; " << (failures.empty() ? "no failures" : std::to_string(failures.size()) + " failure(s)")
+        << "/ (open " << (dir / "index.html").generic_string() << "); "
+        << (failures.empty() ? "no failures" : std::to_string(failures.size()) + " failure(s)")
         << "\n";
   }
   for (const auto& f : failures) err << "relgeo: failure: " << f << '\n';

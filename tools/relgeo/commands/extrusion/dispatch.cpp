@@ -1,24 +1,22 @@
-// tools/relgeo/extrusion_eval.cpp — relgeo::check_extrusion under every
-// kernel and hull algorithm (instantiates all kernels, CGAL Epeck included).
+// tools/relgeo/commands/extrusion/dispatch.cpp — relgeo::check_extrusion
+// under every kernel and hull algorithm (CGAL Epeck included).
 #include <chrono>
 
-#include "extrusion_runs.h"
-#include "hull_runs.h"
-#include "kernel_dispatch.h"
+#include "commands/extrusion/facade.h"
+#include "commands/hull/facade.h"
+#include "kernels/cgal_kernels.h"
+#include "kernels/dispatch.h"
 #include "relgeo/hull/cgal_convex_hull.h"
 
 namespace relgeo::tool {
 
 namespace {
 
-template <class K>
-concept Cgal_adapter = requires { typename K::Cgal; };
-
 /// CGAL::convex_hull_2 as a hull function object for Cgal_kernel<CK>.
 struct Cgal_hull {
   template <class K>
   Hull_result<typename K::Point_2> operator()(std::span<const typename K::Point_2> p, const K& k) const {
-    if constexpr (Cgal_adapter<K>) return cgal_convex_hull<typename K::Cgal>(p, Cgal_hull_algorithm::convex_hull_2, k);
+    if constexpr (is_cgal_kernel_v<K>) return cgal_convex_hull<typename K::Cgal>(p, Cgal_hull_algorithm::convex_hull_2, k);
     else throw Usage_error("algorithm 'cgal' needs a cgal-* kernel");
   }
 };
@@ -33,7 +31,7 @@ Extrusion_report run_extrusion(std::string_view algorithm, std::string_view kern
       if (algorithm == "graham-fortune") return check_extrusion<K>(contour, options, k, Graham_fortune_hull{});
       if (algorithm == "monotone-chain") return check_extrusion<K>(contour, options, k, Monotone_chain_hull{});
       if (algorithm == "graham-incremental") return check_extrusion<K>(contour, options, k, Graham_incremental_hull{});
-      if constexpr (Cgal_adapter<K>) return check_extrusion<K>(contour, options, k, Cgal_hull{});
+      if constexpr (is_cgal_kernel_v<K>) return check_extrusion<K>(contour, options, k, Cgal_hull{});
       throw Usage_error("algorithm '" + std::string(algorithm) + "' cannot run under kernel '" + std::string(kernel) + "'");
     };
     using Clock = std::chrono::steady_clock;

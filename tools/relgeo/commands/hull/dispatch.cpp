@@ -1,5 +1,5 @@
-// tools/relgeo/hull_eval.cpp — the planar hull algorithms under every kernel
-// (instantiates all kernels, CGAL Epeck included).
+// tools/relgeo/commands/hull/dispatch.cpp — the planar hull algorithms under
+// every kernel (CGAL Epeck included).
 #include <chrono>
 #include <csignal>
 #include <iostream>
@@ -12,8 +12,9 @@
 #include <cerrno>
 #endif
 
-#include "hull_runs.h"
-#include "kernel_dispatch.h"
+#include "commands/hull/facade.h"
+#include "kernels/cgal_kernels.h"
+#include "kernels/dispatch.h"
 #include "relgeo/error/hull_backward_error.h"
 #include "relgeo/hull.h"
 #include "relgeo/hull/cgal_convex_hull.h"
@@ -26,9 +27,6 @@ using Clock = std::chrono::steady_clock;
 
 /// Time limit of a run in a child process.
 constexpr unsigned isolated_time_limit_s = 120;
-
-template <class K>
-concept Cgal_adapter = requires { typename K::Cgal; };
 
 }  // namespace
 
@@ -153,7 +151,7 @@ Hull_run run_hull(std::string_view algorithm, std::string_view kernel,
       if (algorithm == "graham-incremental") return graham_incremental<K>(span, k);
       if (algorithm == "graham-fortune") return graham_fortune<K>(span, k, options);
       if (algorithm == "monotone-chain") return monotone_chain<K>(span, k, options);
-      if constexpr (Cgal_adapter<K>)
+      if constexpr (is_cgal_kernel_v<K>)
         return cgal_convex_hull<typename K::Cgal>(span, Cgal_hull_algorithm::convex_hull_2, k);
       // validate_hull_combination lets `cgal` through only for cgal-* kernels.
       throw Usage_error("algorithm '" + std::string(algorithm) + "' cannot run under kernel '" +
@@ -161,27 +159,27 @@ Hull_run run_hull(std::string_view algorithm, std::string_view kernel,
     };
 
     auto timed = [&] {
-    Hull_run run;
-    const auto start = Clock::now();
-    double best = -1;
-    for (;;) {
-      const auto t0 = Clock::now();
-      Hull_result<P> r = compute();
-      const auto t1 = Clock::now();
-      ++run.timed_runs;
-      const double t = std::chrono::duration<double>(t1 - t0).count();
-      if (best < 0 || t < best) best = t;
-      if (run.timed_runs == 1) {
-        run.status = r.status;
-        run.failure = r.failure;
-        run.indices = std::move(r.indices);
-        run.predicate_calls = r.predicate_calls;
-        run.uncertain_answers = r.uncertain_answers;
+      Hull_run run;
+      const auto start = Clock::now();
+      double best = -1;
+      for (;;) {
+        const auto t0 = Clock::now();
+        Hull_result<P> r = compute();
+        const auto t1 = Clock::now();
+        ++run.timed_runs;
+        const double t = std::chrono::duration<double>(t1 - t0).count();
+        if (best < 0 || t < best) best = t;
+        if (run.timed_runs == 1) {
+          run.status = r.status;
+          run.failure = r.failure;
+          run.indices = std::move(r.indices);
+          run.predicate_calls = r.predicate_calls;
+          run.uncertain_answers = r.uncertain_answers;
+        }
+        if (std::chrono::duration<double>(t1 - start).count() >= min_seconds) break;
       }
-      if (std::chrono::duration<double>(t1 - start).count() >= min_seconds) break;
-    }
-    run.time_s = best;
-    return run;
+      run.time_s = best;
+      return run;
     };
 
     Hull_run run;

@@ -1,8 +1,8 @@
-// tools/relgeo/hull_runs.h — planar convex hulls under an algorithm and a
-// kernel chosen at run time (names as on the command line), and the error
-// measures of a computed hull. run_hull instantiates every algorithm under
-// every kernel in its own translation unit (hull_eval.cpp), so the `hull`
-// command and the experiment section compile without the kernels.
+// tools/relgeo/commands/hull/facade.h — planar convex hulls under an
+// algorithm and a kernel named at run time, and the error measures of a
+// computed hull. run_hull instantiates every algorithm under every kernel in
+// dispatch.cpp only, so `hull`, `extrusion` and the experiment compile
+// without the kernels.
 #pragma once
 
 #include <cstddef>
@@ -66,14 +66,5 @@ Hull_evaluation evaluate_hull(std::string_view algorithm, std::string_view kerne
 
 /// The classroom example A1 of Kettner et al. (SPEC Sec. 3.1), in insertion order.
 std::vector<Point_2<double>> classroom_example_a1();
-
-/// Writes an SVG picture of a computed hull: the input points, the computed
-/// hull polygon, the exact hull (relgeo::exact_hull) dashed, lost points
-/// (input points outside conv of the computed hull: backward.moved_points) as
-/// red circles, computed hull vertices that are not exact-hull vertices as
-/// orange squares; fitted to a 600 x 600 viewBox, y up, with a title and a
-/// legend. \throws Usage_error when the file cannot be written.
-void write_hull_svg(const std::string& path, std::span<const Point_2<double>> points,
-                    const Hull_evaluation& e, const std::string& title);
 
 }  // namespace relgeo::tool

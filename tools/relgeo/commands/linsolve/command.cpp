@@ -1,29 +1,25 @@
-// tools/relgeo/linsolve_command.cpp — `relgeo linsolve`: solve A x = b from a
+// tools/relgeo/commands/linsolve/command.cpp — `relgeo linsolve`: solve A x = b from a
 // matrix file (or a built-in example) with a method in a scalar, and report
 // both backward errors, the forward error against the exact rational
 // solution and the condition number.
+#include "commands/linsolve/command.h"
+
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <ostream>
 #include <sstream>
 
-#include "json_output.h"
-#include "linear_curves_commands.h"
-#include "linear_runs.h"
+#include "commands/linsolve/facade.h"
+#include "relgeo/io/json.h"
+#include "relgeo/io/number_text.h"
+#include "relgeo/io/text_file.h"
 #include "relgeo/linear/test_problems.h"
 
 namespace relgeo::tool {
 
 namespace {
 
-std::string read_text(const std::string& path, std::istream& in) {
-  if (path == "-") return std::string(std::istreambuf_iterator<char>(in), {});
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw Usage_error("cannot read '" + path + "'");
-  return std::string(std::istreambuf_iterator<char>(f), {});
-}
+using io::Json;
 
 /// [A | b] from the matrix file text (format: linsolve_help_footer).
 Linear_system<double> parse_system(const std::string& text, const std::string& source) {
@@ -40,18 +36,18 @@ Linear_system<double> parse_system(const std::string& text, const std::string& s
     std::vector<double> row;
     std::string tok;
     while (tokens >> tok)
-      row.push_back(parse_double(tok, source + " line " + std::to_string(number)));
+      row.push_back(io::parse_double(tok, source, number));
     if (row.empty()) continue;
     if (!rows.empty() && row.size() != rows.front().size())
-      throw Usage_error(source + " line " + std::to_string(number) + ": " + std::to_string(row.size()) +
+      throw io::Parse_error(source, number, std::to_string(row.size()) +
                         " numbers, but the first row has " + std::to_string(rows.front().size()) +
                         " (every row: n entries of A, then b_i)");
     rows.push_back(std::move(row));
   }
-  if (rows.empty()) throw Usage_error(source + ": no matrix (empty file)");
+  if (rows.empty()) throw io::Parse_error(source, 0, "no matrix (empty file)");
   const std::size_t n = rows.size();
   if (rows.front().size() != n + 1)
-    throw Usage_error(source + ": " + std::to_string(n) + " rows of " + std::to_string(rows.front().size()) +
+    throw io::Parse_error(source, 0, std::to_string(n) + " rows of " + std::to_string(rows.front().size()) +
                       " numbers; a system of n equations needs n rows of n + 1 numbers (A, then b)");
   Linear_system<double> s{Dense_matrix<double>(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n)),
                           Dense_vector<double>(static_cast<Eigen::Index>(n))};
@@ -63,16 +59,7 @@ Linear_system<double> parse_system(const std::string& text, const std::string& s
   return s;
 }
 
-Json measure(double v) {
-  if (std::isinf(v)) return "inf";
-  if (std::isnan(v)) return "nan";
-  return v;
-}
-std::string measure_text(double v) {
-  if (std::isinf(v)) return "inf";
-  if (v == 0) return "0";
-  return format_g(v, 3);
-}
+Json measure(double v) { return io::json_measure(v); }
 std::string vector_text(const std::vector<double>& v, std::size_t max_listed = 8) {
   std::string s = "(";
   for (std::size_t i = 0; i < v.size() && i < max_listed; ++i) s += (i ? ", " : "") + format_17(v[i]);
@@ -107,20 +94,24 @@ std::string linsolve_help_footer() {
          "forward_error, condition_number, condition_number_exact, forward_error_bound, "
          "growth_factor, residual_norm, exact_solution (rounded to double, or null), time_s; "
          "infinite measures are the string \"inf\".\n"
+         "Defaults: --method partial --scalar double --exact-limit 100; the matrix file may be given positionally "
+         "(relgeo linsolve FILE).\n"
          "Exit codes: 0 solved; 1 the solver failed (zero pivot in a rounding scalar, non-finite "
          "solution); 2 bad input (also an exactly singular matrix: rank < n).\n";
 }
 
-int run_linsolve_command(const Linsolve_options& o, std::istream& in, std::ostream& out, std::ostream& err) {
+int run_linsolve_command(const Linsolve_options& o, Streams io) {
+  std::ostream& out = io.out;
+  std::ostream& err = io.err;
   validate_linear_combination(o.method, o.scalar);
   const int sources = (!o.input.empty()) + (!o.example.empty()) + (o.hilbert > 0);
-  if (sources != 1) throw Usage_error("give exactly one of --input FILE, --example thesis, --hilbert N");
+  if (sources != 1) throw Usage_error("give exactly one of a matrix file (FILE or --input FILE), --example thesis, --hilbert N");
   if (o.exact_limit < 0) throw Usage_error("--exact-limit must be >= 0");
   Linear_system<double> s;
   std::string name;
   if (!o.input.empty()) {
     name = o.input == "-" ? "<stdin>" : o.input;
-    s = parse_system(read_text(o.input, in), name);
+    s = parse_system(o.input == "-" ? io::read_text_stream(io.in) : io::read_text_file(o.input, "matrix file"), name);
   } else if (!o.example.empty()) {
     if (o.example != "thesis") throw Usage_error("--example: unknown example '" + o.example + "'; examples: thesis");
     s = thesis_example();
@@ -167,7 +158,7 @@ int run_linsolve_command(const Linsolve_options& o, std::istream& in, std::ostre
       j["x"] = nullptr;
     } else {
       Json x = Json::array();
-      for (double v : run.x) x.push_back(json_coordinate(v));
+      for (double v : run.x) x.push_back(io::json_coordinate(v));
       j["x"] = x;
     }
     auto m = [&](double v) { return failed ? Json(nullptr) : measure(v); };
@@ -183,11 +174,11 @@ int run_linsolve_command(const Linsolve_options& o, std::istream& in, std::ostre
       j["exact_solution"] = nullptr;
     } else {
       Json x = Json::array();
-      for (double v : exact) x.push_back(json_coordinate(v));
+      for (double v : exact) x.push_back(io::json_coordinate(v));
       j["exact_solution"] = x;
     }
     j["time_s"] = failed ? Json(nullptr) : Json(run.time_s);
-    out << dump_json(j) << '\n';
+    out << io::dump_json(j) << '\n';
   } else {
     auto kv = [&](const std::string& k, const std::string& v) {
       out << k << std::string(k.size() < 30 ? 30 - k.size() : 1, ' ') << v << '\n';

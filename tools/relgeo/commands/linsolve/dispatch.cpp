@@ -1,4 +1,4 @@
-// tools/relgeo/linear_eval.cpp — every linear solver under every scalar
+// tools/relgeo/commands/linsolve/dispatch.cpp — every linear solver under every scalar
 // (float, double, long double, MPFR at the precisions of linear_mpfr_bits,
 // GMP rationals), behind the non-template entry points of linear_runs.h.
 #include <algorithm>
@@ -6,9 +6,9 @@
 #include <string>
 #include <utility>
 
-#include "linear_runs.h"
+#include "cli/text.h"
+#include "commands/linsolve/facade.h"
 #include "relgeo/linear.h"
-#include "tool_common.h"
 
 namespace relgeo::tool {
 

@@ -1,9 +1,10 @@
-// tools/relgeo/linear_common.cpp — names and validation of the linear
-// solvers and scalars (no instantiation: see linear_eval.cpp).
+// tools/relgeo/commands/linsolve/facade.cpp — names and validation of the
+// linear solvers and scalars (no instantiation: see dispatch.cpp).
+#include "commands/linsolve/facade.h"
+
 #include <algorithm>
 
-#include "linear_runs.h"
-#include "tool_common.h"
+#include "cli/text.h"
 
 namespace relgeo::tool {
 

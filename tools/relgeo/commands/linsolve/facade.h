@@ -1,8 +1,9 @@
-// tools/relgeo/linear_runs.h — solving A x = b with a method and a scalar
-// chosen at run time (names as on the command line), measured against the
-// problem's exact data. run_linear_solver instantiates every method under
-// every scalar in its own translation unit (linear_eval.cpp), so the
-// `linsolve` command and the experiment's linear section compile without them.
+// tools/relgeo/commands/linsolve/facade.h — solving A x = b with a method
+// and a scalar named at run time, measured against the problem's exact data.
+// run_linear_solver instantiates every method under every scalar in
+// dispatch.cpp only (the scalars are number types, not kernels: their list is
+// there), so `linsolve` and the experiment's linear section compile without
+// them.
 #pragma once
 
 #include <optional>
@@ -29,7 +30,7 @@ const std::vector<std::string>& linear_scalar_names();
 std::string linear_scalars_summary();
 /// Throws Usage_error unless `method` and `scalar` are known.
 void validate_linear_combination(std::string_view method, std::string_view scalar);
-/// u of the scalar (0 for rational).       [linear_eval.cpp]
+/// u of the scalar (0 for rational).       [dispatch.cpp]
 double scalar_unit_roundoff(std::string_view scalar);
 
 /// What one solve produced.
@@ -48,7 +49,7 @@ struct Linear_run {
 /// and measures the solution against `ref`.
 /// \throws Usage_error for bad names or a combination Eigen cannot run
 ///   (eigen-full with mpfr-*); relgeo::Singular_matrix on a zero pivot.
-///   [linear_eval.cpp]
+///   [dispatch.cpp]
 Linear_run run_linear_solver(std::string_view method, std::string_view scalar, const Linear_reference& ref,
                              double min_seconds = 0);
 

@@ -1,39 +1,30 @@
-// tools/relgeo/subdivide_command.cpp — `relgeo subdivide`: Loop refinement or
+// tools/relgeo/commands/subdivide/command.cpp — `relgeo subdivide`: Loop refinement or
 // the limit mesh of a mesh file under a kernel, with the sampled distance of
 // the limit mesh to the exact limit surface and (--bounds) the error bounds
 // of thesis Sec. 5.4.1.
+#include "commands/subdivide/command.h"
+
 #include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <ostream>
 #include <sstream>
 
-#include "json_output.h"
+#include "commands/subdivide/facade.h"
+#include "commands/subdivide/report.h"
+#include "relgeo/io/json.h"
+#include "relgeo/io/text_file.h"
 #include "relgeo/mesh/mesh_io.h"
-#include "subdivision_commands.h"
 
 namespace relgeo::tool {
 
 namespace {
 
-Json bound_json(const Bound_summary& b) {
-  Json j;
-  j["method"] = b.method;
-  j["is_bound"] = b.is_bound;
-  j["min_lower"] = b.min_lower;
-  j["max_upper"] = b.max_upper;
-  j["mean_width"] = b.mean_width;
-  j["mean_tightness"] = b.mean_tightness;
-  j["max_tightness"] = b.max_tightness;
-  j["tightness_faces"] = b.tightness_faces;
-  j["samples_outside"] = b.samples_outside;
-  return j;
-}
+using io::Json;
 
-std::string g3(double v) { return v == 0 ? "0" : format_g(v, 3); }
+std::string g3(double v) { return measure_text(v, 3); }
 
 }  // namespace
 
@@ -64,23 +55,38 @@ std::string subdivide_help_footer() {
          "valence_histogram, patch_kinds {regular, regular_crease, irregular}, samples_per_face, "
          "samples, distance {refined_mesh, limit_mesh, limit_normal_offset, mesh_size}, bounds [...], "
          "time_s {subdivision, sampling, bounds}, status.\n"
+         "Defaults: --levels 1 --kernel double --rules hoppe --samples 8; the mesh files may be given "
+         "positionally (relgeo subdivide IN [OUT]); without an output file: IN_L<K>.off (IN_L<K>_limit.off with "
+         "--limit) in the current folder, keeping IN's extension (stdin: subdivided_L<K>.off).\n"
          "Exit codes: 0 success, 1 a bound is violated by a sample (a library bug), 2 bad input or usage.\n";
 }
 
-int run_subdivide_command(const Subdivide_options& o, std::istream& in, std::ostream& out, std::ostream& err) {
+std::string default_subdivide_output(const Subdivide_options& o) {
+  const std::string suffix = "_L" + std::to_string(o.levels) + (o.limit ? "_limit" : "");
+  if (o.input.empty() || o.input == "-") return "subdivided" + suffix + ".off";
+  const std::filesystem::path in(o.input);
+  const std::string ext = in.extension().empty() ? std::string(".off") : in.extension().string();
+  return in.stem().string() + suffix + ext;
+}
+
+int run_subdivide_command(const Subdivide_options& options, Streams io) {
+  std::istream& in = io.in;
+  std::ostream& out = io.out;
+  std::ostream& err = io.err;
+  Subdivide_options o = options;
+  if (o.input.empty()) throw Usage_error("no mesh file: give it as 'relgeo subdivide FILE' or --input FILE ('-': OFF on standard input)");
+  if (o.output.empty()) o.output = default_subdivide_output(o);
   if (o.levels < 0 || o.levels > 12) throw Usage_error("--levels must be in 0..12");
   if (o.samples < 0 || o.samples > 256 || (o.samples & (o.samples - 1)) != 0)
     throw Usage_error("--samples must be 0 or a power of two up to 256");
   validate_subdivision_kernel(o.kernel);
   if (o.rules != "hoppe" && o.rules != "blz") throw Usage_error("--rules must be hoppe or blz");
-  if (o.output.empty()) throw Usage_error("--output is required");
   // Read (stdin: OFF through a temporary file, CGAL's reader wants a path).
   std::string path = o.input;
   std::filesystem::path tmp;
   if (o.input == "-") {
     tmp = std::filesystem::temp_directory_path() / ("relgeo_subdivide_" + std::to_string(::getpid()) + ".off");
-    std::ofstream f(tmp, std::ios::binary);
-    f << std::string(std::istreambuf_iterator<char>(in), {});
+    io::write_text_file(tmp.string(), io::read_text_stream(in), "temporary file");
     path = tmp.string();
   }
   Mesh_double mesh;
@@ -143,13 +149,9 @@ int run_subdivide_command(const Subdivide_options& o, std::istream& in, std::ost
   j["bounds"] = jb;
   j["time_s"] = {{"subdivision", r.time_subdivision}, {"sampling", r.time_sampling}, {"bounds", r.time_bounds}};
   j["status"] = violations ? "failed" : "ok";
-  if (!o.report.empty()) {
-    std::ofstream f(o.report, std::ios::binary);
-    f << dump_json(j) << '\n';
-    if (!f) throw Usage_error("cannot write report '" + o.report + "'");
-  }
+  if (!o.report.empty()) io::write_text_file(o.report, io::dump_json(j) + "\n", "report");
   if (o.format == Format::json) {
-    out << dump_json(j) << '\n';
+    out << io::dump_json(j) << '\n';
   } else {
     std::ostringstream s;
     s << "kernel            " << r.kernel << " (" << r.kernel_model << ")\n";

@@ -1,20 +1,23 @@
-// tools/relgeo/subdivision_eval_exact.cpp — run_subdivision under the
-// interval, exact (GMP rational) and MPFR kernels, and the exact reference
-// samples of the limit surface used by the experiment.
-#include "relgeo/kernel/exact_kernel.h"
-#include "relgeo/kernel/interval_kernel.h"
-#include "relgeo/kernel/mpfr_kernel.h"
-#include "subdivision_runs.h"
+// tools/relgeo/commands/subdivide/dispatch_exact.cpp — run_subdivision
+// under the interval, exact (GMP rational) and MPFR kernels, and the exact
+// reference samples of the limit surface used by the experiment.
+#include "commands/subdivide/run_with.h"
 
 namespace relgeo::tool {
 
+namespace {
+
+template <std::size_t... I>
+bool admitted(std::size_t index, std::index_sequence<I...>) {
+  return ((index == I && Subdivision_exact_kernels::admits<kernel_at<I>>) || ...);
+}
+
+}  // namespace
+
 bool run_subdivision_exact_kernels(const Mesh_double& input, const Subdivision_request& rq, Subdivision_result& r) {
-  const std::string& k = rq.kernel;
-  if (k == "interval") r = run_subdivision_with<Interval_kernel>(input, rq);
-  else if (k == "exact") r = run_subdivision_with<Exact_kernel>(input, rq);
-  else if (k == "mpfr-53") r = run_subdivision_with<Mpfr_kernel<53>>(input, rq);
-  else if (k == "mpfr-113") r = run_subdivision_with<Mpfr_kernel<113>>(input, rq);
-  else return false;
+  const Kernel_entry& k = find_kernel(rq.kernel);
+  if (!admitted(k.index, std::make_index_sequence<kernel_count>{})) return false;
+  r = with_kernel<Subdivision_exact_kernels>(k, [&]<class K>(const K&) { return run_subdivision_with<K>(input, rq); });
   return true;
 }
 

@@ -1,25 +1,36 @@
-// tools/relgeo/subdivision_eval_float.cpp — run_subdivision under the kernels
-// with double (float, long double) coordinates, the kernel list of
-// `subdivide`, and the dyadic sample grid. The interval, exact and MPFR
-// kernels are in subdivision_eval_exact.cpp.
-#include "kernel_names.h"
-#include "relgeo/kernel/failsafe_kernel.h"
-#include "relgeo/kernel/filtered_exact_kernel.h"
-#include "relgeo/kernel/naive_kernel.h"
-#include "subdivision_runs.h"
+// tools/relgeo/commands/subdivide/dispatch_float.cpp — run_subdivision under
+// the kernels with float, double or long double coordinates, the kernel list
+// of `subdivide`, and the dyadic sample grid. The interval, exact and MPFR
+// kernels are in dispatch_exact.cpp.
+#include "cli/text.h"
+#include "commands/subdivide/run_with.h"
 
 namespace relgeo::tool {
 
+namespace {
+
+template <std::size_t... I>
+std::vector<std::string> admitted_names(std::index_sequence<I...>) {
+  std::vector<std::string> names;
+  const auto& registry = kernel_registry();
+  ((Subdivision_float_kernels::admits<kernel_at<I>> || Subdivision_exact_kernels::admits<kernel_at<I>>
+        ? names.push_back(registry[I].label())
+        : void()),
+   ...);
+  return names;
+}
+
+}  // namespace
+
 const std::vector<std::string>& subdivision_kernel_names() {
-  static const std::vector<std::string> names = {"float",    "double", "long-double", "failsafe", "filtered",
-                                                 "interval", "exact",  "mpfr-53",     "mpfr-113"};
+  static const std::vector<std::string> names = admitted_names(std::make_index_sequence<kernel_count>{});
   return names;
 }
 
 void validate_subdivision_kernel(const std::string& name) {
-  validate_kernel_name(name);  // unknown names: the tool's usual message
+  const Kernel_entry& k = find_kernel(name);  // unknown names: the tool's usual message
   for (const auto& n : subdivision_kernel_names())
-    if (n == name) return;
+    if (n == k.label()) return;
   std::string list;
   for (const auto& n : subdivision_kernel_names()) list += (list.empty() ? "" : ", ") + n;
   throw Usage_error("kernel '" + name + "' is not supported by subdivide (its constructions are needed; supported: " +
@@ -36,15 +47,10 @@ std::vector<std::pair<double, double>> dyadic_samples(int n) {
 
 Subdivision_result run_subdivision(const Mesh_double& input, const Subdivision_request& rq) {
   validate_subdivision_kernel(rq.kernel);
-  const std::string& k = rq.kernel;
-  if (k == "float") return run_subdivision_with<Naive_kernel<float>>(input, rq);
-  if (k == "double") return run_subdivision_with<Naive_kernel<double>>(input, rq);
-  if (k == "long-double") return run_subdivision_with<Naive_kernel<long double>>(input, rq);
-  if (k == "failsafe") return run_subdivision_with<Failsafe_kernel<double>>(input, rq);
-  if (k == "filtered") return run_subdivision_with<Filtered_exact_kernel>(input, rq);
+  const Kernel_entry& k = find_kernel(rq.kernel);
   Subdivision_result r;
   if (run_subdivision_exact_kernels(input, rq, r)) return r;
-  throw Usage_error("kernel '" + k + "' is listed but not dispatched by subdivide");
+  return with_kernel<Subdivision_float_kernels>(k, [&]<class K>(const K&) { return run_subdivision_with<K>(input, rq); });
 }
 
 }  // namespace relgeo::tool

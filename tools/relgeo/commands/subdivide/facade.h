@@ -1,11 +1,10 @@
-// tools/relgeo/subdivision_commands.h — `relgeo subdivide` and the runs the
-// "subdivision" experiment section shares with it: refinement, limit meshes,
-// sampled distances to the exact limit surface and error bounds under a
-// kernel named at run time (kept out of commands.h so the areas evolve
-// separately; main.cpp parses the options like the others).
+// tools/relgeo/commands/subdivide/facade.h — what `relgeo subdivide` and the
+// experiment's subdivision section run: refinement, limit meshes, sampled
+// distances to the exact limit surface and error bounds under a kernel named
+// at run time (instantiated in dispatch_float.cpp and dispatch_exact.cpp
+// only).
 #pragma once
 
-#include <iosfwd>
 #include <map>
 #include <string>
 #include <vector>
@@ -13,30 +12,10 @@
 #include "relgeo/kernel/point.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/loop_weights.h"
-#include "tool_common.h"
 
 namespace relgeo::tool {
 
-struct Subdivide_options {
-  std::string input;        ///< mesh file (OFF, OBJ, PLY, STL), "-" for OFF on standard input
-  std::string tags;         ///< feature tag file (crease a b / corner v), empty for none
-  std::string output;       ///< mesh file to write (format by extension)
-  std::string report;       ///< JSON report file, empty for none
-  std::string kernel = "double";
-  std::string rules = "hoppe";  ///< hoppe | blz
-  int levels = 1;
-  bool limit = false;       ///< write the limit mesh instead of the refined mesh
-  bool bounds = false;      ///< compute the error bounds of the limit mesh
-  int samples = 8;          ///< sample grid per face side (power of two, 0: no sampling)
-  Format format = Format::text;
-};
-/// `relgeo subdivide`.                                  [subdivide_command.cpp]
-int run_subdivide_command(const Subdivide_options& options, std::istream& in, std::ostream& out,
-                          std::ostream& err);
-/// The help text's description of the input, the measures and the JSON fields.
-std::string subdivide_help_footer();
-
-/// The kernels `subdivide` accepts (a subset of the tool's list).   [subdivision_eval_*.cpp]
+/// The kernels `subdivide` accepts (a subset of the tool's list).   [dispatch_float.cpp]
 const std::vector<std::string>& subdivision_kernel_names();
 /// Throws Usage_error unless `name` is one of subdivision_kernel_names().
 void validate_subdivision_kernel(const std::string& name);
@@ -97,7 +76,7 @@ Subdivision_result run_subdivision(const Mesh_double& input, const Subdivision_r
 /// Samples of the exact (GMP rational) limit surface of `input` over every
 /// face of its level-`levels` refinement (dyadic grid `samples` per side, in
 /// the order of dyadic_samples), rounded to double; and the exact limit-mesh
-/// vertices.                                            [subdivision_eval_exact.cpp]
+/// vertices.                                            [dispatch_exact.cpp]
 void exact_reference(const Mesh_double& input, unsigned levels, const Loop_options& options, int samples,
                      std::vector<Point_3<double>>& surface, std::vector<Point_3<double>>& limit_vertices);
 

@@ -1,7 +1,8 @@
-// tools/relgeo/subdivision_runs.h — the kernel-templated body of
-// run_subdivision, instantiated in subdivision_eval_float.cpp (double-valued
-// kernels) and subdivision_eval_exact.cpp (intervals, rationals, MPFR), so the
-// two halves compile in parallel. Include it only there.
+// tools/relgeo/commands/subdivide/run_with.h — the kernel-templated body of
+// run_subdivision and the two halves of the subdivision kernels, instantiated
+// in dispatch_float.cpp (double-valued kernels) and dispatch_exact.cpp
+// (intervals, rationals, MPFR), so the two compile in parallel. Include it
+// only there.
 #pragma once
 
 #include <algorithm>
@@ -10,14 +11,38 @@
 #include <string>
 #include <vector>
 
+#include "commands/subdivide/facade.h"
+#include "kernels/dispatch.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/subdivision.h"
-#include "subdivision_commands.h"
 
 namespace relgeo::tool {
 
-/// The interval/exact/MPFR half of the dispatch (subdivision_eval_exact.cpp);
-/// false when `request.kernel` is none of its kernels.
+/// The subdivision kernels with float, double or long double coordinates
+/// (naive, failsafe, filtered): dispatch_float.cpp.
+struct Subdivision_float_kernels {
+  template <class K>
+  static constexpr bool check() {
+    if constexpr (is_cgal_kernel_v<K>) return false;  // no CGAL type is completed here
+    else return std::is_floating_point_v<typename K::FT>;
+  }
+  template <class K>
+  static constexpr bool admits = check<K>();
+};
+
+/// The interval, rational and MPFR (53 and 113 bits) kernels: dispatch_exact.cpp.
+struct Subdivision_exact_kernels {
+  template <class K>
+  static constexpr bool check() {
+    if constexpr (is_cgal_kernel_v<K> || mpfr_bits_v<K> > 0) return mpfr_bits_v<K> == 53 || mpfr_bits_v<K> == 113;
+    else return !std::is_floating_point_v<typename K::FT>;
+  }
+  template <class K>
+  static constexpr bool admits = check<K>();
+};
+
+/// The exact half of the dispatch (dispatch_exact.cpp); false when the
+/// kernel is not one of its kernels.
 bool run_subdivision_exact_kernels(const Mesh_double& input, const Subdivision_request& request,
                                    Subdivision_result& result);
 
@@ -65,7 +90,7 @@ Subdivision_result run_subdivision_with(const Mesh_double& input, const Subdivis
   using P = typename K::Point_3;
   using FT = typename K::FT;
   Subdivision_result res;
-  res.kernel = rq.kernel;
+  res.kernel = find_kernel(rq.kernel).label();
   res.kernel_model = K::name();
   const K kernel;
   const auto cp = kernel.construct_point_3_object();

@@ -8,7 +8,7 @@ namespace relgeo::tool {
 void add_format_option(CLI::App& cmd, Format& format) {
   const std::map<std::string, Format> names = {{"text", Format::text}, {"json", Format::json}};
   cmd.add_option("--format", format, "output format on stdout: text (default) or json")
-      ->transform(CLI::CheckedTransformer(names))
+      ->transform(CLI::CheckedTransformer(names).description(""))
       ->type_name("text|json")
       ->default_str("text");
 }

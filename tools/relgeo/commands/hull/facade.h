@@ -48,7 +48,7 @@ struct Hull_run {
 /// construct_point_2 first, not timed). The run is repeated until
 /// `min_seconds` have passed (at least once); time_s is the fastest.
 /// \throws Usage_error for a bad name or combination; relgeo::Error from the
-///   algorithm (Non_finite_input).                       [hull_eval.cpp]
+///   algorithm (Non_finite_input).                       [dispatch.cpp]
 /// `options` go to graham-fortune and monotone-chain.
 Hull_run run_hull(std::string_view algorithm, std::string_view kernel,
                   std::span<const Point_2<double>> points, double min_seconds = 0,

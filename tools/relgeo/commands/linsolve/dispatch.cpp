@@ -1,6 +1,6 @@
 // tools/relgeo/commands/linsolve/dispatch.cpp — every linear solver under every scalar
 // (float, double, long double, MPFR at the precisions of linear_mpfr_bits,
-// GMP rationals), behind the non-template entry points of linear_runs.h.
+// GMP rationals), behind the non-template entry points of facade.h.
 #include <algorithm>
 #include <chrono>
 #include <string>

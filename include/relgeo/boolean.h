@@ -1,0 +1,6 @@
+// relgeo/boolean.h — Booleans of closed triangle meshes under any
+// IntersectionKernel_3 (boolean/mesh_boolean.h), with their result types.
+#pragma once
+
+#include "relgeo/boolean/boolean_types.h"
+#include "relgeo/boolean/mesh_boolean.h"

@@ -1,0 +1,113 @@
+// relgeo/boolean/boolean_types.h — what a mesh Boolean takes and gives:
+// the operation, the options, the result with its provenance, intersection
+// curves and timings, and the error for invalid operands.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "relgeo/core/errors.h"
+#include "relgeo/kernel/point.h"
+#include "relgeo/mesh/mesh_errors.h"
+#include "relgeo/mesh/triangle_mesh.h"
+
+namespace relgeo {
+
+/// A regularised Boolean operation on two solids A and B.
+enum class Boolean_operation : std::uint8_t {
+  union_of,             ///< A u B
+  intersection,         ///< A n B
+  difference,           ///< A - B
+  symmetric_difference  ///< (A - B) u (B - A)
+};
+
+constexpr std::string_view to_string(Boolean_operation op) {
+  switch (op) {
+    case Boolean_operation::union_of: return "union";
+    case Boolean_operation::intersection: return "intersection";
+    case Boolean_operation::difference: return "difference";
+    case Boolean_operation::symmetric_difference: return "xor";
+  }
+  return "?";
+}
+
+/// Options of relgeo::boolean.
+struct Boolean_options {
+  /// Refuse operands that are not closed, oriented 2-manifolds with finite
+  /// coordinates and no degenerate face (Invalid_operand, before any work).
+  bool check_operands = true;
+  /// Also refuse self-intersecting operands (an exact test on all face pairs
+  /// of each operand through the bounding-volume hierarchy: the most
+  /// expensive check; switch it off only for operands known to be clean).
+  bool check_self_intersections = true;
+};
+
+/// An operand is not a valid solid boundary: which one ("A" or "B") and
+/// every defect found, with where (mesh_errors.h).
+class Invalid_operand : public Invalid_mesh {
+ public:
+  Invalid_operand(std::string operand, std::vector<Mesh_issue> issues)
+      : Invalid_mesh("boolean: operand " + operand, std::move(issues)), operand_(std::move(operand)) {}
+  const std::string& operand() const { return operand_; }
+
+ private:
+  std::string operand_;
+};
+
+/// Where an output face comes from: operand 0 (A) or 1 (B) and its face there.
+struct Face_origin {
+  std::uint8_t operand = 0;
+  Index face = 0;
+  friend bool operator==(const Face_origin&, const Face_origin&) = default;
+};
+
+/// Seconds spent in each phase.
+struct Boolean_timing {
+  double check = 0, broad_phase = 0, narrow_phase = 0, retriangulation = 0, labelling = 0, assembly = 0;
+  double total() const { return check + broad_phase + narrow_phase + retriangulation + labelling + assembly; }
+};
+
+/// How many of each thing the computation met.
+struct Boolean_counts {
+  std::size_t candidate_pairs = 0;     ///< face pairs whose boxes overlap
+  std::size_t intersecting_pairs = 0;  ///< face pairs that intersect
+  std::size_t coplanar_pairs = 0;      ///< of which coplanar overlaps
+  std::size_t new_vertices = 0;        ///< intersection points that are not input vertices
+  std::size_t split_faces = 0;         ///< input faces retriangulated
+  std::size_t patches = 0;             ///< pieces labelled by one decision each
+};
+
+/// The result of relgeo::boolean under kernel K.
+template <class K>
+struct Boolean_result {
+  enum class Status : std::uint8_t { ok, failed };
+  Status status = Status::ok;
+  /// Why it failed (empty when ok): the phase and what could not be decided.
+  std::string failure;
+  /// Face pairs the kernel could not decide (fail-safe and interval kernels).
+  std::vector<std::pair<Index, Index>> undecided_pairs;
+  /// The output mesh in doubles (each vertex the nearest the kernel can
+  /// give), the intersection curves tagged as creases.
+  Triangle_mesh<Point_3<double>> mesh;
+  /// The output vertices as the kernel's points: exact under exact kernels.
+  std::vector<typename K::Implicit_point_3> exact_vertices;
+  /// The largest error of a rounded output coordinate (0 when every vertex is
+  /// an input vertex; infinite when the kernel cannot bound it).
+  double rounding_error = 0;
+  /// Per output face: operand and input face.
+  std::vector<Face_origin> provenance;
+  /// Fail-safe perturbations (thesis eq. 5.3) applied to decide pairs:
+  /// the largest rho, and how many.
+  double largest_perturbation = 0;
+  std::size_t perturbations = 0;
+  Boolean_counts counts;
+  Boolean_timing time;
+
+  bool ok() const { return status == Status::ok; }
+};
+
+}  // namespace relgeo

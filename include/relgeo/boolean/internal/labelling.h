@@ -1,0 +1,118 @@
+// relgeo/boolean/internal/labelling.h — which pieces of one operand lie
+// inside, outside or on the other: one decision per patch (the pieces between
+// intersection curves), spread to the patch.
+//
+// A patch that meets a curve is decided at one of its curve edges e = (u, w)
+// by the other operand's two pieces around e, whose planes are the planes of
+// their input faces (explicit: the fast predicates on implicit points). With
+// b1 = (u, w, y1) and b2 = (w, u, y2) the other operand's pieces on e
+// (outward oriented), and x the third point of the patch's piece on e, x lies
+// locally inside the other solid iff it is below both planes of a convex edge
+// (y2 below b1's plane), below one of them at a concave edge, below the
+// common plane at a flat one. A patch that meets no curve is decided by a
+// ray from one of its input vertices: the parity of the other operand's faces
+// crossed, every crossing decided exactly (a ray through an edge or vertex is
+// cast again in another direction).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "relgeo/core/certified_sign.h"
+#include "relgeo/mesh/triangle_mesh.h"
+
+namespace relgeo::internal {
+
+/// Where a piece lies relative to the other operand.
+enum class Piece_label : std::uint8_t {
+  unknown,
+  outside,
+  inside,
+  on_same,      ///< on the other's boundary, same orientation (coplanar overlap)
+  on_opposite,  ///< on the other's boundary, opposite orientation
+};
+
+/// Pieces of one operand: triangles of global point indices, each with the
+/// input face it comes from.
+struct Pieces {
+  std::vector<Triangle> triangles;
+  std::vector<Index> input_face;
+};
+
+/// A directed-edge index over pieces: (u, w) -> the piece with u -> w.
+class Directed_edges {
+ public:
+  explicit Directed_edges(const Pieces& p) {
+    map_.reserve(3 * p.triangles.size());
+    for (Index t = 0; t < p.triangles.size(); ++t)
+      for (int k = 0; k < 3; ++k) map_.emplace(key(p.triangles[t][k], p.triangles[t][(k + 1) % 3]), t);
+  }
+  /// The piece with directed edge u -> w, or invalid_index.
+  Index find(Index u, Index w) const {
+    const auto it = map_.find(key(u, w));
+    return it == map_.end() ? invalid_index : it->second;
+  }
+
+ private:
+  static std::uint64_t key(Index u, Index w) { return (std::uint64_t{u} << 32) | w; }
+  std::unordered_multimap<std::uint64_t, Index> map_;
+};
+
+/// Set of undirected edges (the intersection curves).
+class Edge_set {
+ public:
+  void insert(Index u, Index w) { set_.push_back(key(u, w)); }
+  void finish() {
+    std::sort(set_.begin(), set_.end());
+    set_.erase(std::unique(set_.begin(), set_.end()), set_.end());
+  }
+  bool contains(Index u, Index w) const { return std::binary_search(set_.begin(), set_.end(), key(u, w)); }
+  std::size_t size() const { return set_.size(); }
+  std::vector<Edge> edges() const {
+    std::vector<Edge> out;
+    for (std::uint64_t k : set_) out.push_back({static_cast<Index>(k >> 32), static_cast<Index>(k & 0xFFFFFFFFu)});
+    return out;
+  }
+
+ private:
+  static std::uint64_t key(Index u, Index w) {
+    const Index a = std::min(u, w), b = std::max(u, w);
+    return (std::uint64_t{a} << 32) | b;
+  }
+  std::vector<std::uint64_t> set_;
+};
+
+/// Patches of pieces: components across edges that are not curve edges.
+/// Returns the patch of each piece and the number of patches.
+inline std::pair<std::vector<Index>, Index> patches(const Pieces& p, const Directed_edges& edges, const Edge_set& curves) {
+  std::vector<Index> patch(p.triangles.size(), invalid_index);
+  Index n = 0;
+  std::vector<Index> stack;
+  for (Index s = 0; s < p.triangles.size(); ++s) {
+    if (patch[s] != invalid_index) continue;
+    patch[s] = n;
+    stack.push_back(s);
+    while (!stack.empty()) {
+      const Index t = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        const Index u = p.triangles[t][k], w = p.triangles[t][(k + 1) % 3];
+        if (curves.contains(u, w)) continue;
+        const Index o = edges.find(w, u);
+        if (o != invalid_index && patch[o] == invalid_index) {
+          patch[o] = n;
+          stack.push_back(o);
+        }
+      }
+    }
+    ++n;
+  }
+  return {patch, n};
+}
+
+}  // namespace relgeo::internal

@@ -1,0 +1,611 @@
+// relgeo/boolean/mesh_boolean.h — Booleans of two closed triangle meshes,
+// exact under exact kernels, the same code under every kernel (thesis Ch. 5,
+// SPEC Sec. 5a).
+//
+// The phases (Boolean_timing names them):
+//  1. check     operands are closed, oriented 2-manifolds with finite
+//               coordinates, no degenerate face and no self-intersection;
+//  2. broad     face pairs whose boxes overlap (broad_phase.h);
+//  3. narrow    each pair intersected exactly (intersect_triangles): new
+//               vertices are implicit points, and the same point reached from
+//               several pairs becomes one vertex (sorted by compare_xyz);
+//  4. retriangulation  each face that meets the other operand is
+//               triangulated in its plane with those points and the
+//               intersection segments as constraints (face_triangulation.h);
+//  5. labelling every piece is inside, outside or on the other operand, one
+//               decision per patch between curves (labelling.h);
+//  6. assembly  the pieces the operation keeps, those of B flipped for a
+//               difference, coplanar overlaps kept once, vertices rounded to
+//               doubles with the kernel's stated error.
+// Degenerate input is the normal case: shared vertices and edges, touching,
+// coplanar overlapping faces, identical operands are decided exactly under
+// exact kernels, and the result is regularised (coplanar pieces of opposite
+// orientation, and duplicate ones, are not both kept).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "relgeo/boolean/boolean_types.h"
+#include "relgeo/boolean/internal/broad_phase.h"
+#include "relgeo/boolean/internal/face_triangulation.h"
+#include "relgeo/boolean/internal/labelling.h"
+#include "relgeo/intersection/triangle_intersection.h"
+#include "relgeo/kernel/concepts.h"
+#include "relgeo/mesh/mesh_topology.h"
+#include "relgeo/mesh/validity.h"
+
+namespace relgeo {
+namespace internal {
+
+template <class K>
+class Boolean_engine {
+ public:
+  using P = typename K::Point_3;
+  using IP = typename K::Implicit_point_3;
+  using Mesh = Triangle_mesh<Point_3<double>>;
+  using Result = Boolean_result<K>;
+
+  Boolean_engine(const Mesh& a, const Mesh& b, Boolean_operation op, const K& k, const Boolean_options& o)
+      : mesh_{&a, &b}, op_(op), k_(k), options_(o) {}
+
+  Result run() {
+    Result r;
+    Stopwatch clock;
+    if (options_.check_operands) {
+      check_operand(*mesh_[0], "A");
+      check_operand(*mesh_[1], "B");
+    }
+    r.time.check = clock.lap();
+    load_points();
+    std::vector<std::pair<Index, Index>> pairs;
+    for_each_overlapping_pair(face_boxes(*mesh_[0]), face_boxes(*mesh_[1]),
+                              [&](Index fa, Index fb) { pairs.emplace_back(fa, fb); });
+    r.counts.candidate_pairs = pairs.size();
+    r.time.broad_phase = clock.lap();
+    if (!narrow_phase(pairs, r)) return finish_failed(r, clock, &Boolean_timing::narrow_phase);
+    r.time.narrow_phase = clock.lap();
+    if (!retriangulate(r)) return finish_failed(r, clock, &Boolean_timing::retriangulation);
+    r.time.retriangulation = clock.lap();
+    if (!label(r)) return finish_failed(r, clock, &Boolean_timing::labelling);
+    r.time.labelling = clock.lap();
+    assemble(r);
+    r.time.assembly = clock.lap();
+    return r;
+  }
+
+ private:
+  struct Stopwatch {
+    std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
+    double lap() {
+      const auto now = std::chrono::steady_clock::now();
+      const double s = std::chrono::duration<double>(now - t).count();
+      t = now;
+      return s;
+    }
+  };
+  Result& finish_failed(Result& r, Stopwatch& clock, double Boolean_timing::*phase) {
+    r.status = Result::Status::failed;
+    r.time.*phase = clock.lap();
+    return r;
+  }
+
+  // ---- 1. operands ------------------------------------------------------------
+
+  void check_operand(const Mesh& m, const char* name) const {
+    Mesh_report report = check_mesh<K>(m);
+    if (!report.is_valid()) throw Invalid_operand(name, std::move(report.issues));
+    if (options_.check_self_intersections) {
+      std::vector<Mesh_issue> issues;
+      for (const auto& [f, g] : self_intersecting_pairs(m)) issues.push_back({Mesh_defect::self_intersection, {f, g}});
+      if (!issues.empty()) throw Invalid_operand(name, std::move(issues));
+    }
+  }
+
+  // Pairs of faces meeting other than in what they share (vertices, edge).
+  std::vector<std::pair<Index, Index>> self_intersecting_pairs(const Mesh& m) const {
+    std::vector<std::pair<Index, Index>> out;
+    const auto boxes = face_boxes(m);
+    std::vector<Point_3<double>> v = m.vertices;
+    for_each_overlapping_pair(boxes, boxes, [&](Index f, Index g) {
+      if (f >= g) return;
+      const Triangle& tf = m.faces[f];
+      const Triangle& tg = m.faces[g];
+      int shared = 0;
+      for (Index x : tf) shared += std::count(tg.begin(), tg.end(), x);
+      const auto r = intersect_triangles(triangle(m, f), triangle(m, g), k_);
+      if (r.kind == Triangle_intersection_kind::disjoint) return;
+      if (r.kind == Triangle_intersection_kind::undecided) {
+        out.emplace_back(f, g);
+        return;
+      }
+      // Allowed: exactly the shared vertex, or exactly the shared edge.
+      const bool only_shared = (shared == 1 && r.kind == Triangle_intersection_kind::vertex_touch) ||
+                               (shared == 2 && r.kind == Triangle_intersection_kind::edge_touch &&
+                                all_points_are_shared_vertices(r, tf, tg));
+      if (shared == 1 && r.kind == Triangle_intersection_kind::vertex_touch &&
+          !all_points_are_shared_vertices(r, tf, tg))
+        out.emplace_back(f, g);
+      else if (!only_shared)
+        out.emplace_back(f, g);
+    });
+    return out;
+  }
+  bool all_points_are_shared_vertices(const Triangle_intersection<K>& r, const Triangle& tf, const Triangle& tg) const {
+    for (const auto& l : r.locations) {
+      if (l[0].kind != Triangle_location::Kind::vertex || l[1].kind != Triangle_location::Kind::vertex) return false;
+      if (tf[l[0].index] != tg[l[1].index]) return false;
+    }
+    return true;
+  }
+
+  // ---- points -----------------------------------------------------------------
+
+  std::array<P, 3> triangle(const Mesh& m, Index f) const {
+    const auto p = k_.construct_point_3_object();
+    std::array<P, 3> t;
+    for (int i = 0; i < 3; ++i) {
+      const Point_3<double>& v = m.vertices[m.faces[f][i]];
+      t[i] = p(v.x, v.y, v.z);
+    }
+    return t;
+  }
+
+  // Global points: A's vertices, then B's, then the new ones.
+  void load_points() {
+    const auto p = k_.construct_point_3_object();
+    const auto make = k_.construct_implicit_point_3_object();
+    offset_[0] = 0;
+    offset_[1] = static_cast<Index>(mesh_[0]->vertices.size());
+    for (int m = 0; m < 2; ++m)
+      for (const auto& v : mesh_[m]->vertices) points_.push_back(make(p(v.x, v.y, v.z)));
+    parent_.resize(points_.size());
+    std::iota(parent_.begin(), parent_.end(), Index{0});
+  }
+  Index find(Index x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void unite(Index x, Index y) {
+    x = find(x), y = find(y);
+    if (x == y) return;
+    if (y < x) std::swap(x, y);  // the smaller index (an input vertex first) represents
+    parent_[y] = x;
+  }
+
+  // ---- 3. narrow phase ---------------------------------------------------------
+
+  // One point of one pair's intersection: its temporary index and where it
+  // lies on face fa of A and face fb of B.
+  struct Located_point {
+    Index point;
+    Index face[2];
+    Triangle_location where[2];
+  };
+
+  bool narrow_phase(const std::vector<std::pair<Index, Index>>& pairs, Result& r) {
+    for (const auto& [fa, fb] : pairs) {
+      const auto x = intersect_triangles(triangle(*mesh_[0], fa), triangle(*mesh_[1], fb), k_);
+      if (x.kind == Triangle_intersection_kind::undecided) {
+        r.undecided_pairs.emplace_back(fa, fb);
+        continue;
+      }
+      if (!x.perturbations.empty()) {
+        ++r.perturbations;
+        for (const auto& p : x.perturbations) r.largest_perturbation = std::max(r.largest_perturbation, p.rho);
+      }
+      if (x.kind == Triangle_intersection_kind::disjoint) continue;
+      ++r.counts.intersecting_pairs;
+      if (x.kind == Triangle_intersection_kind::coplanar_overlap) {
+        ++r.counts.coplanar_pairs;
+        coplanar_[0][fa].push_back(fb);
+        coplanar_[1][fb].push_back(fa);
+      }
+      std::array<Index, 6> ids{};
+      for (std::size_t i = 0; i < x.points.size(); ++i) ids[i] = register_point(x.points[i], fa, fb, x.locations[i]);
+      // Curve segments: a segment, or the boundary of a coplanar polygon.
+      const std::size_t n = x.points.size();
+      if (n == 2) segments_.push_back({ids[0], ids[1], fa, fb});
+      if (n >= 3)
+        for (std::size_t i = 0; i < n; ++i) segments_.push_back({ids[i], ids[(i + 1) % n], fa, fb});
+    }
+    if (!r.undecided_pairs.empty()) {
+      r.failure = "narrow phase: " + std::to_string(r.undecided_pairs.size()) +
+                  " face pairs the kernel cannot decide (see undecided_pairs)";
+      return false;
+    }
+    merge_equal_points();
+    r.counts.new_vertices = points_.size() - offset_[1] - mesh_[1]->vertices.size();
+    return true;
+  }
+
+  Index register_point(const IP& p, Index fa, Index fb, const std::array<Triangle_location, 2>& where) {
+    Index id = invalid_index;
+    // An input vertex keeps its index (both, if a vertex of A is one of B).
+    for (int m = 0; m < 2; ++m)
+      if (where[m].kind == Triangle_location::Kind::vertex) {
+        const Index v = offset_[m] + mesh_[m]->faces[m == 0 ? fa : fb][where[m].index];
+        if (id == invalid_index) id = v;
+        else unite(id, v);
+      }
+    if (id == invalid_index) {
+      id = static_cast<Index>(points_.size());
+      points_.push_back(p);
+      parent_.push_back(id);
+    }
+    located_.push_back({id, {fa, fb}, {where[0], where[1]}});
+    return id;
+  }
+
+  // Equal points reached from different pairs (or as different
+  // constructions) become one: sorted by the exact lexicographic order.
+  void merge_equal_points() {
+    std::vector<Index> ids;
+    for (const auto& l : located_) ids.push_back(l.point);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    const auto compare = k_.compare_xyz_3_object();
+    std::sort(ids.begin(), ids.end(), [&](Index a, Index b) { return compare(points_[a], points_[b]) == Certified_sign::negative; });
+    for (std::size_t i = 1; i < ids.size(); ++i)
+      if (compare(points_[ids[i - 1]], points_[ids[i]]) == Certified_sign::zero) unite(ids[i - 1], ids[i]);
+  }
+
+  // ---- 4. retriangulation ---------------------------------------------------------
+
+  struct Segment {
+    Index a, b;
+    Index fa, fb;
+  };
+
+  bool retriangulate(Result& r) {
+    // What lies on each face and on each edge of each operand.
+    std::array<std::unordered_map<Index, Face_constraints>, 2> faces;
+    std::array<std::unordered_map<std::uint64_t, std::vector<Index>>, 2> edge_points;
+    const auto edge_key = [](Index u, Index w) {
+      return (std::uint64_t{std::min(u, w)} << 32) | std::max(u, w);
+    };
+    for (const auto& l : located_) {
+      const Index id = find(l.point);
+      for (int m = 0; m < 2; ++m) {
+        const Triangle& f = mesh_[m]->faces[l.face[m]];
+        Face_constraints& c = faces[m][l.face[m]];
+        switch (l.where[m].kind) {
+          case Triangle_location::Kind::vertex: break;
+          case Triangle_location::Kind::edge: {
+            const int e = l.where[m].index;
+            edge_points[m][edge_key(f[e], f[(e + 1) % 3])].push_back(id);
+            break;
+          }
+          default: c.interior_points.push_back(id);
+        }
+      }
+    }
+    for (const Segment& s : segments_) {
+      const Index a = find(s.a), b = find(s.b);
+      if (a == b) continue;
+      curves_.insert(a, b);
+      faces[0][s.fa].segments.push_back({a, b});
+      faces[1][s.fb].segments.push_back({a, b});
+    }
+    curves_.finish();
+    // Faces whose edges carry points are split too (each side of an edge the same way).
+    for (int m = 0; m < 2; ++m)
+      for (Index f = 0; f < mesh_[m]->faces.size(); ++f) {
+        const Triangle& t = mesh_[m]->faces[f];
+        for (int e = 0; e < 3; ++e)
+          if (edge_points[m].count(edge_key(t[e], t[(e + 1) % 3]))) faces[m][f];
+      }
+    Face_triangulator<K> triangulator(k_, points_);
+    for (int m = 0; m < 2; ++m) {
+      const Mesh& mesh = *mesh_[m];
+      for (Index f = 0; f < mesh.faces.size(); ++f) {
+        const Triangle& t = mesh.faces[f];
+        const std::array<Index, 3> corners{find(offset_[m] + t[0]), find(offset_[m] + t[1]), find(offset_[m] + t[2])};
+        const auto it = faces[m].find(f);
+        if (it == faces[m].end()) {
+          pieces_[m].triangles.push_back(corners);
+          pieces_[m].input_face.push_back(f);
+          continue;
+        }
+        Face_constraints& c = it->second;
+        c.corners = corners;
+        for (int e = 0; e < 3; ++e) {
+          const auto ep = edge_points[m].find(edge_key(t[e], t[(e + 1) % 3]));
+          if (ep != edge_points[m].end()) c.edge_points[e] = ep->second;
+          // Points equal to a corner are the corner.
+          auto& v = c.edge_points[e];
+          v.erase(std::remove_if(v.begin(), v.end(), [&](Index p) { return p == corners[0] || p == corners[1] || p == corners[2]; }), v.end());
+        }
+        auto& in = c.interior_points;
+        std::sort(in.begin(), in.end());
+        in.erase(std::unique(in.begin(), in.end()), in.end());
+        in.erase(std::remove_if(in.begin(), in.end(), [&](Index p) { return p == corners[0] || p == corners[1] || p == corners[2]; }), in.end());
+        const Face_triangulation tri = triangulator.run(c, projection_axis(mesh, f));
+        if (!tri.ok) {
+          r.failure = "retriangulation of face " + std::to_string(f) + " of " + (m == 0 ? "A" : "B") + ": " + tri.failure;
+          return false;
+        }
+        ++r.counts.split_faces;
+        for (const Triangle& x : tri.triangles) {
+          pieces_[m].triangles.push_back(x);
+          pieces_[m].input_face.push_back(f);
+        }
+      }
+    }
+    return true;
+  }
+
+  // The axis along which face f's normal is largest (in doubles: only a
+  // choice; the triangulator checks the projection does not degenerate).
+  static int projection_axis(const Mesh& m, Index f) {
+    const Point_3<double>& a = m.vertices[m.faces[f][0]];
+    const Point_3<double>& b = m.vertices[m.faces[f][1]];
+    const Point_3<double>& c = m.vertices[m.faces[f][2]];
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    const double n[3] = {std::abs(uy * vz - uz * vy), std::abs(uz * vx - ux * vz), std::abs(ux * vy - uy * vx)};
+    return n[0] >= n[1] && n[0] >= n[2] ? 0 : (n[1] >= n[2] ? 1 : 2);
+  }
+
+  // ---- 5. labelling ---------------------------------------------------------------
+
+  bool label(Result& r) {
+    for (int m = 0; m < 2; ++m) {
+      const Directed_edges edges(pieces_[m]);
+      const auto [patch, count] = patches(pieces_[m], edges, curves_);
+      r.counts.patches += count;
+      std::vector<Piece_label> patch_label(count, Piece_label::unknown);
+      const Directed_edges other_edges(pieces_[1 - m]);
+      // Coplanar pieces first, then a curve edge of each patch, then rays.
+      for (Index t = 0; t < pieces_[m].triangles.size(); ++t) {
+        if (patch_label[patch[t]] != Piece_label::unknown) continue;
+        const auto c = coplanar_label(m, t);
+        if (!c) return fail(r, "labelling: a coplanar piece the kernel cannot place");
+        if (*c != Piece_label::unknown) patch_label[patch[t]] = *c;
+      }
+      for (Index t = 0; t < pieces_[m].triangles.size(); ++t) {
+        if (patch_label[patch[t]] != Piece_label::unknown) continue;
+        for (int k = 0; k < 3; ++k) {
+          const Index u = pieces_[m].triangles[t][k], w = pieces_[m].triangles[t][(k + 1) % 3];
+          if (!curves_.contains(u, w)) continue;
+          const Piece_label l = edge_label(m, t, k, other_edges);
+          if (l != Piece_label::unknown) {
+            patch_label[patch[t]] = l;
+            break;
+          }
+        }
+      }
+      for (Index t = 0; t < pieces_[m].triangles.size(); ++t) {
+        if (patch_label[patch[t]] != Piece_label::unknown) continue;
+        const auto l = ray_label(m, t);
+        if (!l) return fail(r, "labelling: a patch no ray from its vertices decides");
+        patch_label[patch[t]] = *l;
+      }
+      labels_[m].resize(pieces_[m].triangles.size());
+      for (Index t = 0; t < pieces_[m].triangles.size(); ++t) labels_[m][t] = patch_label[patch[t]];
+    }
+    return true;
+  }
+  bool fail(Result& r, const char* why) {
+    r.failure = why;
+    return false;
+  }
+
+  // On the other operand's boundary? unknown when not coplanar with any
+  // face it overlaps; nullopt when undecided.
+  std::optional<Piece_label> coplanar_label(int m, Index t) {
+    const Index f = pieces_[m].input_face[t];
+    const auto it = coplanar_[m].find(f);
+    if (it == coplanar_[m].end()) return Piece_label::unknown;
+    const Triangle& piece = pieces_[m].triangles[t];
+    const Mesh& mine = *mesh_[m];
+    const Mesh& other = *mesh_[1 - m];
+    const int axis = projection_axis(mine, f);
+    const auto orient2 = k_.implicit_orientation_2_object();
+    const auto corner = [&](int mesh, Index face, int i) -> const IP& {
+      return points_[offset_[mesh] + (mesh == m ? mine : other).faces[face][i]];
+    };
+    const Certified_sign mine_sign = orient2(corner(m, f, 0), corner(m, f, 1), corner(m, f, 2), axis);
+    for (Index g : it->second) {
+      const Certified_sign other_sign = orient2(corner(1 - m, g, 0), corner(1 - m, g, 1), corner(1 - m, g, 2), axis);
+      if (!is_certain(mine_sign) || !is_certain(other_sign)) return std::nullopt;
+      // The piece lies in g iff its three points do (g is convex).
+      bool inside = true;
+      for (int v = 0; v < 3 && inside; ++v)
+        for (int e = 0; e < 3 && inside; ++e) {
+          const Certified_sign s = orient2(corner(1 - m, g, e), corner(1 - m, g, (e + 1) % 3), points_[piece[v]], axis);
+          if (!is_certain(s)) return std::nullopt;
+          inside = s == Certified_sign::zero || s == other_sign;
+        }
+      if (inside) return mine_sign == other_sign ? Piece_label::on_same : Piece_label::on_opposite;
+    }
+    return Piece_label::unknown;
+  }
+
+  // Decided at curve edge k of piece t: the other operand's pieces on it.
+  Piece_label edge_label(int m, Index t, int k, const Directed_edges& other_edges) {
+    const Triangle& piece = pieces_[m].triangles[t];
+    const Index u = piece[k], w = piece[(k + 1) % 3], x = piece[(k + 2) % 3];
+    const Index b1 = other_edges.find(u, w), b2 = other_edges.find(w, u);
+    if (b1 == invalid_index || b2 == invalid_index) return Piece_label::unknown;
+    const int o = 1 - m;
+    const Index y2 = third(pieces_[o].triangles[b2], w, u);
+    const auto side = [&](Index piece_of_other, Index point) {  // orientation against the input face's plane
+      const std::array<P, 3> f = triangle(*mesh_[o], pieces_[o].input_face[piece_of_other]);
+      return k_.implicit_orientation_3_object()(f[0], f[1], f[2], points_[point]);
+    };
+    const Certified_sign o1 = side(b1, x), o2 = side(b2, x), edge = side(b1, y2);
+    if (!is_certain(o1) || !is_certain(o2) || !is_certain(edge)) return Piece_label::unknown;
+    if (o1 == Certified_sign::zero || o2 == Certified_sign::zero) return Piece_label::unknown;  // coplanar locally
+    const bool below1 = o1 == Certified_sign::negative, below2 = o2 == Certified_sign::negative;
+    bool inside;
+    if (edge == Certified_sign::negative) inside = below1 && below2;       // convex edge
+    else if (edge == Certified_sign::positive) inside = below1 || below2;  // concave edge
+    else inside = below1;                                                  // flat
+    return inside ? Piece_label::inside : Piece_label::outside;
+  }
+  static Index third(const Triangle& t, Index a, Index b) {
+    for (Index v : t)
+      if (v != a && v != b) return v;
+    return t[0];
+  }
+
+  // Parity of the other operand's faces crossed by a segment from an input
+  // vertex of piece t to a point above the other's box; nullopt if no vertex
+  // of t gives a clean segment in a few directions.
+  enum class Crossing { none, once, recast, on_surface, undecided };
+
+  std::optional<Piece_label> ray_label(int m, Index t) {
+    const Mesh& other = *mesh_[1 - m];
+    double zmax = -std::numeric_limits<double>::infinity();
+    for (const auto& v : other.vertices) zmax = std::max(zmax, v.z);
+    const auto point = k_.construct_point_3_object();
+    const Index first = offset_[m], last = offset_[m] + static_cast<Index>(mesh_[m]->vertices.size());
+    for (Index v : pieces_[m].triangles[t]) {
+      if (v < first || v >= last) continue;  // not an input vertex of this operand
+      const Point_3<double>& pv = mesh_[m]->vertices[v - first];
+      const P p = point(pv.x, pv.y, pv.z);
+      for (int attempt = 0; attempt < 8; ++attempt) {
+        const double lift = std::max(1.0, std::abs(zmax)) * (2 + attempt);
+        const P q = point(pv.x + attempt * 0.37 * lift, pv.y + attempt * 0.61 * lift, zmax + lift);
+        int crossings = 0;
+        Crossing c = Crossing::none;
+        for (Index g = 0; g < other.faces.size(); ++g) {
+          c = crossing(triangle(other, g), p, q);
+          if (c == Crossing::once) ++crossings;
+          else if (c != Crossing::none) break;
+        }
+        if (c == Crossing::undecided) return std::nullopt;
+        if (c == Crossing::on_surface) break;  // this vertex lies on the other surface: try another
+        if (c == Crossing::recast) continue;
+        return crossings % 2 ? Piece_label::inside : Piece_label::outside;
+      }
+    }
+    return std::nullopt;
+  }
+
+  // How segment pq (p an input vertex, q off every plane of interest) meets triangle f.
+  Crossing crossing(const std::array<P, 3>& f, const P& p, const P& q) const {
+    const auto orient = k_.orientation_3_object();
+    const Certified_sign sp = orient(f[0], f[1], f[2], p), sq = orient(f[0], f[1], f[2], q);
+    if (!is_certain(sp) || !is_certain(sq)) return Crossing::undecided;
+    if (sq == Certified_sign::zero) return Crossing::recast;
+    if (sp != Certified_sign::zero && sp == sq) return Crossing::none;
+    // The line pq against the triangle's edges: all the same strict sign iff
+    // it passes through the interior.
+    const Certified_sign e0 = orient(p, q, f[0], f[1]), e1 = orient(p, q, f[1], f[2]), e2 = orient(p, q, f[2], f[0]);
+    if (!is_certain(e0) || !is_certain(e1) || !is_certain(e2)) return Crossing::undecided;
+    const bool through_interior = e0 == e1 && e1 == e2 && e0 != Certified_sign::zero;
+    const bool misses = (e0 == Certified_sign::positive || e1 == Certified_sign::positive || e2 == Certified_sign::positive) &&
+                        (e0 == Certified_sign::negative || e1 == Certified_sign::negative || e2 == Certified_sign::negative);
+    if (sp == Certified_sign::zero) return misses ? Crossing::none : Crossing::on_surface;  // p in the plane
+    if (misses) return Crossing::none;
+    return through_interior ? Crossing::once : Crossing::recast;  // through an edge or a vertex: cast again
+  }
+
+  // ---- 6. assembly -------------------------------------------------------------------
+
+  bool keeps(int m, Piece_label l, bool& flip) const {
+    flip = false;
+    switch (op_) {
+      case Boolean_operation::union_of:
+        return l == Piece_label::outside || (m == 0 && l == Piece_label::on_same);
+      case Boolean_operation::intersection:
+        return l == Piece_label::inside || (m == 0 && l == Piece_label::on_same);
+      case Boolean_operation::difference:
+        if (m == 0) return l == Piece_label::outside || l == Piece_label::on_opposite;
+        flip = true;
+        return l == Piece_label::inside;
+      case Boolean_operation::symmetric_difference:
+        flip = l == Piece_label::inside;
+        return l == Piece_label::outside || l == Piece_label::inside;
+    }
+    return false;
+  }
+
+  void assemble(Result& r) {
+    std::vector<Index> new_index(points_.size(), invalid_index);
+    const auto approximate = k_.approximate_point_3_object();
+    const auto use = [&](Index g) {
+      Index& n = new_index[g];
+      if (n == invalid_index) {
+        n = static_cast<Index>(r.exact_vertices.size());
+        r.exact_vertices.push_back(points_[g]);
+        if (g < offset_[1] + mesh_[1]->vertices.size()) {
+          const int m = g < offset_[1] ? 0 : 1;
+          r.mesh.vertices.push_back(mesh_[m]->vertices[g - offset_[m]]);
+        } else {
+          const Approximate_point_3 a = approximate(points_[g]);
+          r.mesh.vertices.push_back(a.point);
+          r.rounding_error = std::max(r.rounding_error, a.error);
+        }
+      }
+      return n;
+    };
+    for (int m = 0; m < 2; ++m)
+      for (Index t = 0; t < pieces_[m].triangles.size(); ++t) {
+        bool flip = false;
+        if (!keeps(m, labels_[m][t], flip)) continue;
+        Triangle tri = pieces_[m].triangles[t];
+        if (flip) std::swap(tri[1], tri[2]);
+        r.mesh.faces.push_back({use(tri[0]), use(tri[1]), use(tri[2])});
+        r.provenance.push_back({static_cast<std::uint8_t>(m), pieces_[m].input_face[t]});
+      }
+    // The curves that are edges of the output are its creases.
+    Edge_set output_edges;
+    for (const Triangle& f : r.mesh.faces)
+      for (int k = 0; k < 3; ++k) output_edges.insert(f[k], f[(k + 1) % 3]);
+    output_edges.finish();
+    std::vector<Edge> creases;
+    for (const Edge& e : curves_.edges())
+      if (new_index[e.a] != invalid_index && new_index[e.b] != invalid_index &&
+          output_edges.contains(new_index[e.a], new_index[e.b]))
+        creases.push_back(Edge::of(new_index[e.a], new_index[e.b]));
+    r.mesh.tags.set_creases(std::move(creases));
+  }
+
+  std::array<const Mesh*, 2> mesh_;
+  Boolean_operation op_;
+  const K& k_;
+  Boolean_options options_;
+  std::array<Index, 2> offset_{};
+  std::vector<IP> points_;
+  std::vector<Index> parent_;
+  std::vector<Located_point> located_;
+  std::vector<Segment> segments_;
+  std::array<std::unordered_map<Index, std::vector<Index>>, 2> coplanar_;
+  Edge_set curves_;
+  std::array<Pieces, 2> pieces_;
+  std::array<std::vector<Piece_label>, 2> labels_;
+};
+
+}  // namespace internal
+
+/// \brief The regularised Boolean `op` of the solids bounded by closed
+/// triangle meshes `a` and `b` (double coordinates), under kernel K.
+///
+/// Requires an IntersectionKernel_3. Exact under kernels with exact
+/// predicates (Filtered_exact_kernel, the default, and Exact_kernel): the
+/// result's exact_vertices are the exact points, its mesh their nearest
+/// doubles (rounding_error says how far; rounding can in rare cases make the
+/// rounded mesh self-intersect: validate it). Fail-safe and interval kernels
+/// give the same result or a failure naming the face pairs they cannot
+/// decide; naive kernels give what their arithmetic gives, never a crash.
+/// \throws Invalid_operand when an operand is open, non-manifold,
+/// inconsistently oriented, degenerate, non-finite or self-intersecting
+/// (options.check_operands), before any other work.
+template <class K = Filtered_exact_kernel>
+Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b,
+                          Boolean_operation op, const K& k = K{}, const Boolean_options& options = {}) {
+  return internal::Boolean_engine<K>(a, b, op, k, options).run();
+}
+
+}  // namespace relgeo

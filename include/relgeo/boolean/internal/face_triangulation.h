@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <string>
 #include <utility>
 #include <vector>
@@ -226,32 +227,59 @@ class Face_triangulator {
       if (o != Certified_sign::zero || !strictly_between(a, b, p)) continue;
       return insert_segment(a, p) && insert_segment(p, b);
     }
-    // Flip the edges crossing ab until ab is an edge (each flip removes a
-    // crossing or moves it; bounded for safety).
-    const std::size_t limit = 16 * tris_.size() * tris_.size() + 64;
-    for (std::size_t iteration = 0; iteration < limit; ++iteration) {
-      if (has_edge(a, b)) {
-        constrained_.push_back({std::min(a, b), std::max(a, b)});
-        return true;
+    // Sloan's queue: the edges crossing ab; an edge whose quadrilateral is
+    // not convex goes to the back, a flipped one whose new diagonal still
+    // crosses ab too (so no edge is flipped back and forth). Bounded for safety.
+    std::deque<std::array<int, 2>> crossing;
+    for (const Tri& t : tris_) {
+      if (!t.alive) continue;
+      for (int k = 0; k < 3; ++k) {
+        const int x = t.v[k], y = t.v[(k + 1) % 3];
+        if (x > y) continue;
+        const int c = crosses(a, b, x, y);
+        if (c < 0) return false;
+        if (c == 0) continue;
+        if (is_constrained(x, y)) return failed("two constraint segments cross (self-intersecting input)");
+        crossing.push_back({x, y});
       }
-      bool flipped = false;
-      for (std::size_t i = 0; i < tris_.size() && !flipped; ++i) {
-        if (!tris_[i].alive) continue;
-        for (int k = 0; k < 3 && !flipped; ++k) {
-          const int x = tris_[i].v[k], y = tris_[i].v[(k + 1) % 3];
-          if (tris_[i].nb[k] < 0 || x > y) continue;  // boundary, or seen from the other side
-          const int c = crosses(a, b, x, y);
-          if (c < 0) return false;
-          if (c == 0) continue;
-          if (is_constrained(x, y)) return failed("two constraint segments cross (self-intersecting input)");
-          const int f = flip_if_convex(static_cast<int>(i), k);
-          if (f < 0) return false;
-          flipped = f > 0;
+    }
+    const std::size_t limit = 64 * (crossing.size() + 1) * (crossing.size() + 1) + 64;
+    for (std::size_t iteration = 0; !crossing.empty(); ++iteration) {
+      if (iteration > limit) return failed("constraint insertion did not terminate");
+      const auto [x, y] = crossing.front();
+      crossing.pop_front();
+      int ti = -1, k = -1;
+      if (!find_edge(x, y, ti, k)) return failed("a crossing edge disappeared");
+      const int f = flip_if_convex(ti, k);
+      if (f < 0) return false;
+      if (f == 0) {
+        crossing.push_back({x, y});
+        continue;
+      }
+      // The new diagonal is edge 2 of ti after the flip: (q, p).
+      const int p = tris_[ti].v[0], q = tris_[ti].v[2];
+      const int c = crosses(a, b, p, q);
+      if (c < 0) return false;
+      if (c == 1) crossing.push_back({std::min(p, q), std::max(p, q)});
+    }
+    if (!has_edge(a, b)) return failed("no flip makes a constraint segment an edge");
+    constrained_.push_back({std::min(a, b), std::max(a, b)});
+    return true;
+  }
+
+  // The triangle and its edge index holding edge {x, y} (either direction).
+  bool find_edge(int x, int y, int& ti, int& k) const {
+    for (std::size_t i = 0; i < tris_.size(); ++i) {
+      if (!tris_[i].alive) continue;
+      for (int j = 0; j < 3; ++j) {
+        const int u = tris_[i].v[j], v = tris_[i].v[(j + 1) % 3];
+        if ((u == x && v == y) || (u == y && v == x)) {
+          ti = static_cast<int>(i), k = j;
+          return tris_[i].nb[j] >= 0;
         }
       }
-      if (!flipped) return failed("no flip makes a constraint segment an edge");
     }
-    return failed("constraint insertion did not terminate");
+    return false;
   }
 
   bool strictly_between(int a, int b, int p) {

@@ -7,6 +7,7 @@
 // hard (the naive double kernel must be wrong on them).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -78,7 +79,7 @@ struct Tally {
   }
 };
 struct Family_tally {
-  Tally orientation_3, orientation_2, compare, construction;
+  Tally orientation_3, orientation_2, compare, construction, approximation;
   Tally all() const {
     Tally t = orientation_3;
     t += orientation_2;
@@ -119,6 +120,20 @@ Family_tally run(const Family_with_signs& f, std::size_t stride) {
     ++t.construction.cases;
     if (!f.points[i] && p) ++t.construction.wrong;
     if (f.points[i] && !p) ++t.construction.uncertain;
+    // The approximation is within its stated error of the exact point.
+    if (f.points[i] && p && i % 7 == 0) {
+      const Approximate_point_3 x = k.approximate_point_3_object()(*p);
+      ++t.approximation.cases;
+      if (!std::isfinite(x.error)) ++t.approximation.uncertain;
+      else {
+        const double c[3] = {x.point.x, x.point.y, x.point.z};
+        for (int axis = 0; axis < 3; ++axis)
+          if (abs(mpq_class(c[axis]) - (*f.points[i])[axis]) > mpq_class(x.error)) {
+            ++t.approximation.wrong;
+            break;
+          }
+      }
+    }
     pts.push_back(std::move(p));
   }
   const auto answer = [&](const auto& idx, auto&& f) {
@@ -160,6 +175,7 @@ std::map<std::string, Family_tally> run_all(std::size_t stride = 1) {
     line("orientation_2", t.orientation_2);
     line("compare_xyz", t.compare);
     line("construction", t.construction);
+    line("approximation", t.approximation);
     out[f.w.name] = t;
   }
   return out;
@@ -170,6 +186,7 @@ void expect_sound(const std::map<std::string, Family_tally>& tallies, bool never
   for (const auto& [name, t] : tallies) {
     EXPECT_EQ(t.all().wrong, 0u) << K::name() << " on " << name;
     EXPECT_EQ(t.construction.wrong, 0u) << K::name() << " built a point that does not exist, on " << name;
+    EXPECT_EQ(t.approximation.wrong, 0u) << K::name() << " approximated a point beyond its stated error, on " << name;
     if (never_uncertain) {
       EXPECT_EQ(t.all().uncertain, 0u) << K::name() << " on " << name;
       EXPECT_EQ(t.construction.uncertain, 0u) << K::name() << " on " << name;

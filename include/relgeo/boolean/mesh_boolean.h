@@ -41,6 +41,7 @@
 #include "relgeo/boolean/internal/labelling.h"
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel/concepts.h"
+#include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/validity.h"
 
@@ -101,8 +102,12 @@ class Boolean_engine {
 
   // ---- 1. operands ------------------------------------------------------------
 
+  // The operands are double meshes: their validity is decided exactly,
+  // whatever kernel the Boolean itself runs under.
+  using Check_kernel = Filtered_exact_kernel;
+
   void check_operand(const Mesh& m, const char* name) const {
-    Mesh_report report = check_mesh<K>(m);
+    Mesh_report report = check_mesh<Check_kernel>(m);
     if (!report.is_valid()) throw Invalid_operand(name, std::move(report.issues));
     if (options_.check_self_intersections) {
       std::vector<Mesh_issue> issues;
@@ -111,36 +116,38 @@ class Boolean_engine {
     }
   }
 
-  // Pairs of faces meeting other than in what they share (vertices, edge).
-  std::vector<std::pair<Index, Index>> self_intersecting_pairs(const Mesh& m) const {
+  // Pairs of faces meeting other than in what they share (vertices, edge), exactly.
+  static std::vector<std::pair<Index, Index>> self_intersecting_pairs(const Mesh& m) {
+    const Check_kernel k;
+    const auto point = k.construct_point_3_object();
+    const auto triangle_of = [&](Index f) {
+      std::array<Check_kernel::Point_3, 3> t;
+      for (int i = 0; i < 3; ++i) {
+        const Point_3<double>& v = m.vertices[m.faces[f][i]];
+        t[i] = point(v.x, v.y, v.z);
+      }
+      return t;
+    };
     std::vector<std::pair<Index, Index>> out;
     const auto boxes = face_boxes(m);
-    std::vector<Point_3<double>> v = m.vertices;
     for_each_overlapping_pair(boxes, boxes, [&](Index f, Index g) {
       if (f >= g) return;
       const Triangle& tf = m.faces[f];
       const Triangle& tg = m.faces[g];
       int shared = 0;
-      for (Index x : tf) shared += std::count(tg.begin(), tg.end(), x);
-      const auto r = intersect_triangles(triangle(m, f), triangle(m, g), k_);
+      for (Index x : tf) shared += static_cast<int>(std::count(tg.begin(), tg.end(), x));
+      const auto r = intersect_triangles(triangle_of(f), triangle_of(g), k);
       if (r.kind == Triangle_intersection_kind::disjoint) return;
-      if (r.kind == Triangle_intersection_kind::undecided) {
-        out.emplace_back(f, g);
-        return;
-      }
       // Allowed: exactly the shared vertex, or exactly the shared edge.
-      const bool only_shared = (shared == 1 && r.kind == Triangle_intersection_kind::vertex_touch) ||
-                               (shared == 2 && r.kind == Triangle_intersection_kind::edge_touch &&
-                                all_points_are_shared_vertices(r, tf, tg));
-      if (shared == 1 && r.kind == Triangle_intersection_kind::vertex_touch &&
-          !all_points_are_shared_vertices(r, tf, tg))
-        out.emplace_back(f, g);
-      else if (!only_shared)
-        out.emplace_back(f, g);
+      const bool only_shared = ((shared == 1 && r.kind == Triangle_intersection_kind::vertex_touch) ||
+                                (shared == 2 && r.kind == Triangle_intersection_kind::edge_touch)) &&
+                               all_points_are_shared_vertices(r, tf, tg);
+      if (!only_shared) out.emplace_back(f, g);
     });
     return out;
   }
-  bool all_points_are_shared_vertices(const Triangle_intersection<K>& r, const Triangle& tf, const Triangle& tg) const {
+  static bool all_points_are_shared_vertices(const Triangle_intersection<Check_kernel>& r, const Triangle& tf,
+                                             const Triangle& tg) {
     for (const auto& l : r.locations) {
       if (l[0].kind != Triangle_location::Kind::vertex || l[1].kind != Triangle_location::Kind::vertex) return false;
       if (tf[l[0].index] != tg[l[1].index]) return false;

@@ -78,6 +78,12 @@ class Scaled_integers {
           if (b.mantissa != 0) emin_ = std::min(emin_, b.exponent);
         }
   }
+  /// q times the inverse of the scaling (for values of degree 1 in the inputs).
+  void unscale(mpq_class& q) const {
+    if (emin_ == INT_MAX) return;  // every input 0
+    if (emin_ > 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(emin_));
+    else if (emin_ < 0) mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-emin_));
+  }
   mpz_class operator()(double v) const {
     const Binary_parts b = binary_parts(v);
     mpz_class z;
@@ -161,21 +167,25 @@ struct Staged_implicit_policy {
       return compare_xyz_sign(*h[0], *h[1]);
     });
   }
-  /// From the error-bounded coordinates; when their W is not certainly
-  /// nonzero, the exact rational point rounded to nearest.
+  /// The nearest doubles: from the filter when its enclosure is within one
+  /// ulp of its midpoint, otherwise from the exact coordinates, rounded once
+  /// (error at most half an ulp).
   static Approximate_point_3 approximate(const Point& a) {
     return in_default_fp_environment([&] {
+      if (a.kind == Implicit_point_kind::explicit_point) return Approximate_point_3{a.primitives[0], 0.0};
       const Approximate_point_3 fast = approximate_from_enclosure(a.filter);
-      if (std::isfinite(fast.error)) return fast;
+      const double scale = std::max({std::abs(fast.point.x), std::abs(fast.point.y), std::abs(fast.point.z)});
+      if (fast.error <= 0x1p-52 * scale) return fast;
       const std::array<const Point*, 1> one{&a};
-      const Scaled_integers to_integer(one);  // the common scale cancels in X / W
+      const Scaled_integers to_integer(one);
       const Homogeneous_3<mpz_class> h = homogeneous_coordinates<mpz_class>(a, to_integer);
       Approximate_point_3 r;
       double error = 0;
       double* out[3] = {&r.point.x, &r.point.y, &r.point.z};
       for (int axis = 0; axis < 3; ++axis) {
-        mpq_class c = h.unit ? mpq_class(h[axis]) : mpq_class(h[axis], h.w);
+        mpq_class c(h[axis], h.w);
         c.canonicalize();
+        to_integer.unscale(c);  // X / W scales like a coordinate: undo the scaling of the inputs
         *out[axis] = round_rational<double>(c, Rounding::to_nearest);
         error = std::max({error, sub_up(upper_double(c), *out[axis]), sub_up(*out[axis], lower_double(c))});
       }

@@ -274,25 +274,32 @@ class Boolean_engine {
   };
 
   bool retriangulate(Result& r) {
-    // What lies on each face and on each edge of each operand.
-    std::array<std::unordered_map<Index, Face_constraints>, 2> faces;
-    std::array<std::unordered_map<std::uint64_t, std::vector<Index>>, 2> edge_points;
-    const auto edge_key = [](Index u, Index w) {
-      return (std::uint64_t{std::min(u, w)} << 32) | std::max(u, w);
+    // What lies on each face and on each edge of each operand: flat arrays
+    // indexed by the operands' own topology (face -> slot of the faces met).
+    std::array<Mesh_topology, 2> topology{Mesh_topology::build(*mesh_[0]), Mesh_topology::build(*mesh_[1])};
+    std::array<std::vector<Index>, 2> slot{std::vector<Index>(mesh_[0]->faces.size(), invalid_index),
+                                           std::vector<Index>(mesh_[1]->faces.size(), invalid_index)};
+    std::array<std::vector<Face_constraints>, 2> faces;
+    std::array<std::vector<std::vector<Index>>, 2> edge_points{
+        std::vector<std::vector<Index>>(topology[0].number_of_edges()),
+        std::vector<std::vector<Index>>(topology[1].number_of_edges())};
+    const auto constraints = [&](int m, Index f) -> Face_constraints& {
+      if (slot[m][f] == invalid_index) {
+        slot[m][f] = static_cast<Index>(faces[m].size());
+        faces[m].emplace_back();
+      }
+      return faces[m][slot[m][f]];
     };
     for (const auto& l : located_) {
       const Index id = find(l.point);
       for (int m = 0; m < 2; ++m) {
-        const Triangle& f = mesh_[m]->faces[l.face[m]];
-        Face_constraints& c = faces[m][l.face[m]];
-        switch (l.where[m].kind) {
-          case Triangle_location::Kind::vertex: break;
-          case Triangle_location::Kind::edge: {
-            const int e = l.where[m].index;
-            edge_points[m][edge_key(f[e], f[(e + 1) % 3])].push_back(id);
-            break;
-          }
-          default: c.interior_points.push_back(id);
+        if (l.where[m].kind == Triangle_location::Kind::vertex) continue;
+        Face_constraints& c = constraints(m, l.face[m]);
+        if (l.where[m].kind == Triangle_location::Kind::edge) {
+          const Index e = topology[m].edge(3 * l.face[m] + l.where[m].index);
+          edge_points[m][e].push_back(id);
+        } else {
+          c.interior_points.push_back(id);
         }
       }
     }
@@ -300,42 +307,37 @@ class Boolean_engine {
       const Index a = find(s.a), b = find(s.b);
       if (a == b) continue;
       curves_.insert(a, b);
-      faces[0][s.fa].segments.push_back({a, b});
-      faces[1][s.fb].segments.push_back({a, b});
+      constraints(0, s.fa).segments.push_back({a, b});
+      constraints(1, s.fb).segments.push_back({a, b});
     }
     curves_.finish();
-    // Faces whose edges carry points are split too (each side of an edge the same way).
-    for (int m = 0; m < 2; ++m)
-      for (Index f = 0; f < mesh_[m]->faces.size(); ++f) {
-        const Triangle& t = mesh_[m]->faces[f];
-        for (int e = 0; e < 3; ++e)
-          if (edge_points[m].count(edge_key(t[e], t[(e + 1) % 3]))) faces[m][f];
-      }
     Face_triangulator<K> triangulator(k_, points_);
     for (int m = 0; m < 2; ++m) {
       const Mesh& mesh = *mesh_[m];
       for (Index f = 0; f < mesh.faces.size(); ++f) {
         const Triangle& t = mesh.faces[f];
         const std::array<Index, 3> corners{find(offset_[m] + t[0]), find(offset_[m] + t[1]), find(offset_[m] + t[2])};
-        const auto it = faces[m].find(f);
-        if (it == faces[m].end()) {
+        // A face is split when it meets the other operand or a point lies on one of its edges.
+        bool split = slot[m][f] != invalid_index;
+        for (int e = 0; e < 3 && !split; ++e) split = !edge_points[m][topology[m].edge(3 * f + e)].empty();
+        if (!split) {
           pieces_[m].triangles.push_back(corners);
           pieces_[m].input_face.push_back(f);
           continue;
         }
-        Face_constraints& c = it->second;
+        Face_constraints& c = constraints(m, f);
+        const auto not_corner = [&](std::vector<Index>& v) {
+          std::sort(v.begin(), v.end());
+          v.erase(std::unique(v.begin(), v.end()), v.end());
+          v.erase(std::remove_if(v.begin(), v.end(), [&](Index p) { return p == corners[0] || p == corners[1] || p == corners[2]; }),
+                  v.end());
+        };
         c.corners = corners;
         for (int e = 0; e < 3; ++e) {
-          const auto ep = edge_points[m].find(edge_key(t[e], t[(e + 1) % 3]));
-          if (ep != edge_points[m].end()) c.edge_points[e] = ep->second;
-          // Points equal to a corner are the corner.
-          auto& v = c.edge_points[e];
-          v.erase(std::remove_if(v.begin(), v.end(), [&](Index p) { return p == corners[0] || p == corners[1] || p == corners[2]; }), v.end());
+          c.edge_points[e] = edge_points[m][topology[m].edge(3 * f + e)];
+          not_corner(c.edge_points[e]);
         }
-        auto& in = c.interior_points;
-        std::sort(in.begin(), in.end());
-        in.erase(std::unique(in.begin(), in.end()), in.end());
-        in.erase(std::remove_if(in.begin(), in.end(), [&](Index p) { return p == corners[0] || p == corners[1] || p == corners[2]; }), in.end());
+        not_corner(c.interior_points);
         const Face_triangulation tri = triangulator.run(c, projection_axis(mesh, f));
         if (!tri.ok) {
           r.failure = "retriangulation of face " + std::to_string(f) + " of " + (m == 0 ? "A" : "B") + ": " + tri.failure;
@@ -365,12 +367,17 @@ class Boolean_engine {
   // ---- 5. labelling ---------------------------------------------------------------
 
   bool label(Result& r) {
+    std::array<Mesh_topology, 2> topology;
     for (int m = 0; m < 2; ++m) {
-      const Directed_edges edges(pieces_[m]);
-      const auto [patch, count] = patches(pieces_[m], edges, curves_);
+      std::vector<Mesh_issue> issues;
+      topology[m] = Mesh_topology::build_checked(points_.size(), pieces_[m].triangles, issues);
+      if (!issues.empty())  // only a naive kernel's inconsistent answers can do that
+        return fail(r, "labelling: the pieces of an operand do not form a manifold");
+    }
+    for (int m = 0; m < 2; ++m) {
+      const auto [patch, count] = patches(topology[m], curves_);
       r.counts.patches += count;
       std::vector<Piece_label> patch_label(count, Piece_label::unknown);
-      const Directed_edges other_edges(pieces_[1 - m]);
       // Coplanar pieces first, then a curve edge of each patch, then rays.
       for (Index t = 0; t < pieces_[m].triangles.size(); ++t) {
         if (patch_label[patch[t]] != Piece_label::unknown) continue;
@@ -383,7 +390,7 @@ class Boolean_engine {
         for (int k = 0; k < 3; ++k) {
           const Index u = pieces_[m].triangles[t][k], w = pieces_[m].triangles[t][(k + 1) % 3];
           if (!curves_.contains(u, w)) continue;
-          const Piece_label l = edge_label(m, t, k, other_edges);
+          const Piece_label l = edge_label(m, t, k, topology[1 - m]);
           if (l != Piece_label::unknown) {
             patch_label[patch[t]] = l;
             break;
@@ -438,11 +445,12 @@ class Boolean_engine {
   }
 
   // Decided at curve edge k of piece t: the other operand's pieces on it.
-  Piece_label edge_label(int m, Index t, int k, const Directed_edges& other_edges) {
+  Piece_label edge_label(int m, Index t, int k, const Mesh_topology& other) {
     const Triangle& piece = pieces_[m].triangles[t];
     const Index u = piece[k], w = piece[(k + 1) % 3], x = piece[(k + 2) % 3];
-    const Index b1 = other_edges.find(u, w), b2 = other_edges.find(w, u);
-    if (b1 == invalid_index || b2 == invalid_index) return Piece_label::unknown;
+    const Index h1 = other.find_halfedge(u, w), h2 = other.find_halfedge(w, u);
+    if (h1 == invalid_index || h2 == invalid_index) return Piece_label::unknown;
+    const Index b1 = h1 / 3, b2 = h2 / 3;
     const int o = 1 - m;
     const Index y2 = third(pieces_[o].triangles[b2], w, u);
     const auto side = [&](Index piece_of_other, Index point) {  // orientation against the input face's plane

@@ -19,11 +19,11 @@
 #include <array>
 #include <cstdint>
 #include <optional>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::internal {
@@ -42,25 +42,6 @@ enum class Piece_label : std::uint8_t {
 struct Pieces {
   std::vector<Triangle> triangles;
   std::vector<Index> input_face;
-};
-
-/// A directed-edge index over pieces: (u, w) -> the piece with u -> w.
-class Directed_edges {
- public:
-  explicit Directed_edges(const Pieces& p) {
-    map_.reserve(3 * p.triangles.size());
-    for (Index t = 0; t < p.triangles.size(); ++t)
-      for (int k = 0; k < 3; ++k) map_.emplace(key(p.triangles[t][k], p.triangles[t][(k + 1) % 3]), t);
-  }
-  /// The piece with directed edge u -> w, or invalid_index.
-  Index find(Index u, Index w) const {
-    const auto it = map_.find(key(u, w));
-    return it == map_.end() ? invalid_index : it->second;
-  }
-
- private:
-  static std::uint64_t key(Index u, Index w) { return (std::uint64_t{u} << 32) | w; }
-  std::unordered_multimap<std::uint64_t, Index> map_;
 };
 
 /// Set of undirected edges (the intersection curves).
@@ -87,32 +68,32 @@ class Edge_set {
   std::vector<std::uint64_t> set_;
 };
 
-/// Patches of pieces: components across edges that are not curve edges.
-/// Returns the patch of each piece and the number of patches.
-inline std::pair<std::vector<Index>, Index> patches(const Pieces& p, const Directed_edges& edges, const Edge_set& curves) {
-  std::vector<Index> patch(p.triangles.size(), invalid_index);
-  Index n = 0;
+/// Patches of pieces: components across edges that are not curve edges,
+/// through the pieces' half-edge topology. Returns the patch of each piece
+/// and the number of patches.
+inline std::pair<std::vector<Index>, Index> patches(const Mesh_topology& topology, const Edge_set& curves) {
+  const std::size_t n = topology.number_of_faces();
+  std::vector<Index> patch(n, invalid_index);
+  Index count = 0;
   std::vector<Index> stack;
-  for (Index s = 0; s < p.triangles.size(); ++s) {
+  for (Index s = 0; s < n; ++s) {
     if (patch[s] != invalid_index) continue;
-    patch[s] = n;
+    patch[s] = count;
     stack.push_back(s);
     while (!stack.empty()) {
       const Index t = stack.back();
       stack.pop_back();
-      for (int k = 0; k < 3; ++k) {
-        const Index u = p.triangles[t][k], w = p.triangles[t][(k + 1) % 3];
-        if (curves.contains(u, w)) continue;
-        const Index o = edges.find(w, u);
-        if (o != invalid_index && patch[o] == invalid_index) {
-          patch[o] = n;
-          stack.push_back(o);
-        }
+      for (Index h = 3 * t; h < 3 * t + 3; ++h) {
+        const Index o = topology.opposite(h);
+        if (o == invalid_index || patch[o / 3] != invalid_index) continue;
+        if (curves.contains(topology.source(h), topology.target(h))) continue;
+        patch[o / 3] = count;
+        stack.push_back(o / 3);
       }
     }
-    ++n;
+    ++count;
   }
-  return {patch, n};
+  return {patch, count};
 }
 
 }  // namespace relgeo::internal

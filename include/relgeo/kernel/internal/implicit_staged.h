@@ -167,15 +167,21 @@ struct Staged_implicit_policy {
       return compare_xyz_sign(*h[0], *h[1]);
     });
   }
-  /// The nearest doubles: from the filter when its enclosure is within one
-  /// ulp of its midpoint, otherwise from the exact coordinates, rounded once
-  /// (error at most half an ulp).
+  /// Doubles within a few ulps: from the filter when its enclosure is within
+  /// 4 ulps of its midpoint, else from intervals recomputed from the defining
+  /// doubles, else the exact coordinates rounded once (at most half an ulp).
   static Approximate_point_3 approximate(const Point& a) {
     return in_default_fp_environment([&] {
       if (a.kind == Implicit_point_kind::explicit_point) return Approximate_point_3{a.primitives[0], 0.0};
+      const auto close = [](const Approximate_point_3& x) {
+        const double scale = std::max({std::abs(x.point.x), std::abs(x.point.y), std::abs(x.point.z)});
+        return x.error <= 0x1p-50 * scale;
+      };
       const Approximate_point_3 fast = approximate_from_enclosure(a.filter);
-      const double scale = std::max({std::abs(fast.point.x), std::abs(fast.point.y), std::abs(fast.point.z)});
-      if (fast.error <= 0x1p-52 * scale) return fast;
+      if (close(fast)) return fast;
+      const Approximate_point_3 interval = approximate_from_enclosure(
+          homogeneous_coordinates<Interval>(a, [](double v) { return Interval(v); }));
+      if (close(interval)) return interval;
       const std::array<const Point*, 1> one{&a};
       const Scaled_integers to_integer(one);
       const Homogeneous_3<mpz_class> h = homogeneous_coordinates<mpz_class>(a, to_integer);

@@ -12,7 +12,11 @@
 // predictor replaying a short batch thousands of times learns its sign
 // sequence, and the measured time then depends on how well each binary's code
 // layout lets it memorise (with 4096 queries CGAL::Epick's own functor measured
-// 2.3 ns in one build and 5.2 ns in another). From about 16k queries on the
+// 2.3 ns in one build and 5.2 ns in another; in one run of 2026-11-25 it
+// measured 2.6 ns per call on uniform orientation_2 input while the same CGAL
+// functor behind relgeo's adapter, whose two extra branches dilute the branch
+// history, measured 8.0 ns: a "3x adapter cost" that is the predictor's, and
+// at 32768 queries both measure 12-14 ns). From about 16k queries on the
 // timings are stable and reflect unpredictable signs, as a predicate sees in
 // an algorithm. --relgeo_cases=N changes it.
 //

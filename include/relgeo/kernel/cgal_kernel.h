@@ -190,13 +190,14 @@ class Cgal_kernel {
   }
   // Certified kernels with inexact (double) coordinates cannot decide on
   // non-finite coordinates; the others either lie anyway (naive) or cannot
-  // hold them. Branch-free: a double is finite when its exponent field is not
-  // all ones.
+  // hold them. Branch-free: a double is NaN or infinite when its exponent
+  // field is all ones, and then adding 1 to that field carries into bit 63
+  // (two integer operations per coordinate, the results or-ed).
   static constexpr bool checks_finiteness =
       is_certified && !has_exact_constructions && std::is_same_v<FT, double>;
   static std::uint64_t non_finite_bits(double v) {
     constexpr std::uint64_t exponent = 0x7FF0000000000000ull;
-    return static_cast<std::uint64_t>((std::bit_cast<std::uint64_t>(v) & exponent) == exponent);
+    return (std::bit_cast<std::uint64_t>(v) & exponent) + 0x0010000000000000ull;
   }
   static std::uint64_t non_finite_bits(const Point_2& p) {
     if constexpr (checks_finiteness) return non_finite_bits(p.x()) | non_finite_bits(p.y());
@@ -208,7 +209,8 @@ class Cgal_kernel {
   }
   template <class... P>
   static bool all_finite_points(const P&... points) {
-    return (non_finite_bits(points) | ...) == 0;
+    if constexpr (checks_finiteness) return ((non_finite_bits(points) | ...) >> 63) == 0;
+    else return true;
   }
 };
 

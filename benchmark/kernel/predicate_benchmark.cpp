@@ -26,14 +26,18 @@
 // time per call at 1.5-3x the CPU time: the median real-time ratio of
 // filtered / CGAL::Epick on near-collinear input read 0.92 in one run and
 // 0.88 in the next of the same binary (33% spread of filtered's real times
-// in the first), the CPU-time ratio 0.89 and 0.89. The other cause of
-// swinging ratios is the batch size: with --relgeo_cases=4096 CGAL::Epick's
-// sign branches are learnt by the branch predictor (2.6 ns per call on
-// uniform input against 13 ns at 32768 queries, filtered unchanged at 2.8),
-// and how much is learnt depends on code layout and on what else ran on the
-// core (predicate_benchmark.h). Subjects are interleaved at random, every
-// repetition starts with a short warm-up (the subject's queries back in
-// cache), and a bar should be read from two runs at least.
+// in the first), the CPU-time ratio 0.89 and 0.89. The other cause was the
+// branch predictor learning the replayed batch's signs: CGAL::Epick, which
+// branches on the sign, read 2.6 ns per call on uniform orientation_2 input
+// with --relgeo_cases=4096 and, at the default 32768 queries, 3.5 ns in two
+// full runs and 13 ns in others of the same binary (filtered, which does
+// not branch on the sign, 2.8 ns throughout), so its ratios to CGAL swung
+// from 0.2 to 0.8 (to 1.1 at 4096). Every pass now swaps the first two
+// points of a different pseudo-random half of the queries
+// (predicate_benchmark.h), so no sign sequence is replayed. Subjects are
+// interleaved at random, every repetition starts with a short warm-up (the
+// subject's queries back in cache), and a bar should be read from two runs
+// at least.
 //
 // Defaults, each unless given on the command line: --benchmark_min_time=0.2
 // --benchmark_min_warmup_time=0.02 --benchmark_repetitions=5

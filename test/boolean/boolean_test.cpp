@@ -134,6 +134,26 @@ TYPED_TEST(MeshBoolean, SpheresAndTorusInGeneralPosition) {
   }
 }
 
+// Exact_kernel runs through its Double_point_kernel hook by default; its own
+// rational arithmetic (the reference path) must give the same faces and the
+// same exact vertices.
+TEST(MeshBooleanExact, TheDoublePointHookGivesTheReferenceResult) {
+  std::vector<std::pair<Mesh, Mesh>> cases{{cube(0, 0, 0, 1), box(0.5, 0.25, 0.125, 1, 1, 1)},
+                                           {cube(0, 0, 0, 1), box(0.5, 0, 0, 1, 1, 1)},
+                                           {icosphere(1), icosphere(1, {0.4, 0.3, 0.1}, 0.8)},
+                                           {torus(1, 0.4, 12, 8), icosphere(1, {1, 0, 0.1}, 0.5)}};
+  for (const auto& [a, b] : cases)
+    for (Op op : kOps) {
+      const auto hook = boolean(a, b, op, Exact_kernel{});
+      const auto own = boolean(a, b, op, Exact_kernel{}, Boolean_options{.use_double_point_kernel = false});
+      ASSERT_TRUE(hook.ok() && own.ok());
+      EXPECT_EQ(hook.mesh.faces, own.mesh.faces) << to_string(op);
+      ASSERT_EQ(hook.exact_vertices.size(), own.exact_vertices.size());
+      for (std::size_t i = 0; i < own.exact_vertices.size(); ++i)
+        EXPECT_EQ(hook.exact_vertices[i].point, own.exact_vertices[i].point) << to_string(op) << " vertex " << i;
+    }
+}
+
 TEST(MeshBooleanOperands, BadOperandsAreRefusedWithTheDefect) {
   const Mesh good = cube(0, 0, 0, 1);
   const auto defect_of = [&](const Mesh& bad) -> Mesh_defect {

@@ -44,6 +44,12 @@ struct Boolean_options {
   /// of each operand through the bounding-volume hierarchy: the most
   /// expensive check; switch it off only for operands known to be clean).
   bool check_self_intersections = true;
+  /// A kernel that names a Double_point_kernel (Exact_kernel: the filtered
+  /// exact kernel, whose predicates answer the same exact signs on double
+  /// input) runs the Boolean with it and converts the result's vertices to
+  /// its own exact points. False: the kernel's own arithmetic throughout
+  /// (Exact_kernel: GMP rationals everywhere, the reference path).
+  bool use_double_point_kernel = true;
 };
 
 /// An operand is not a valid solid boundary: which one ("A" or "B") and

@@ -41,6 +41,7 @@
 #include "relgeo/boolean/internal/labelling.h"
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel/concepts.h"
+#include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/validity.h"
@@ -602,6 +603,37 @@ class Boolean_engine {
   std::array<std::vector<Piece_label>, 2> labels_;
 };
 
+/// A kernel over rationals whose Double_point_kernel hook names the filtered
+/// exact kernel (Exact_kernel).
+template <class K>
+concept Runs_on_filtered_exact_kernel =
+    requires { typename K::Double_point_kernel; } &&
+    std::same_as<typename K::Double_point_kernel, Filtered_exact_kernel> &&
+    std::same_as<typename K::Implicit_point_3, typename Rounded_implicit_policy<K, mpq_class>::Point>;
+
+/// The result of the filtered exact kernel as a result of kernel K over
+/// rationals: the same faces, the vertices as K's exact points.
+template <class K>
+Boolean_result<K> with_exact_vertices(Boolean_result<Filtered_exact_kernel>&& r) {
+  Boolean_result<K> out;
+  out.status = r.status == Boolean_result<Filtered_exact_kernel>::Status::ok ? Boolean_result<K>::Status::ok
+                                                                            : Boolean_result<K>::Status::failed;
+  out.failure = std::move(r.failure);
+  out.undecided_pairs = std::move(r.undecided_pairs);
+  out.mesh = std::move(r.mesh);
+  out.rounding_error = r.rounding_error;
+  out.provenance = std::move(r.provenance);
+  out.largest_perturbation = r.largest_perturbation;
+  out.perturbations = r.perturbations;
+  out.counts = r.counts;
+  out.time = r.time;
+  for (const auto& v : r.exact_vertices) {
+    const auto c = Staged_implicit_policy::exact_coordinates(v);
+    out.exact_vertices.push_back({Point_3<mpq_class>{c[0], c[1], c[2]}, v.kind});
+  }
+  return out;
+}
+
 }  // namespace internal
 
 /// \brief The regularised Boolean `op` of the solids bounded by closed
@@ -620,6 +652,11 @@ class Boolean_engine {
 template <class K = Filtered_exact_kernel>
 Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b,
                           Boolean_operation op, const K& k = K{}, const Boolean_options& options = {}) {
+  if constexpr (internal::Runs_on_filtered_exact_kernel<K>) {
+    if (options.use_double_point_kernel)
+      return internal::with_exact_vertices<K>(
+          internal::Boolean_engine<Filtered_exact_kernel>(a, b, op, Filtered_exact_kernel{}, options).run());
+  }
   return internal::Boolean_engine<K>(a, b, op, k, options).run();
 }
 

@@ -167,6 +167,22 @@ struct Staged_implicit_policy {
       return compare_xyz_sign(*h[0], *h[1]);
     });
   }
+  /// The exact rational coordinates (GMP; the filters are not used).
+  static std::array<mpq_class, 3> exact_coordinates(const Point& a) {
+    if (a.kind == Implicit_point_kind::explicit_point)
+      return {exact_rational(a.primitives[0].x), exact_rational(a.primitives[0].y), exact_rational(a.primitives[0].z)};
+    const std::array<const Point*, 1> one{&a};
+    const Scaled_integers to_integer(one);
+    const Homogeneous_3<mpz_class> h = homogeneous_coordinates<mpz_class>(a, to_integer);
+    std::array<mpq_class, 3> c;
+    for (int axis = 0; axis < 3; ++axis) {
+      c[axis] = mpq_class(h[axis], h.w);
+      c[axis].canonicalize();
+      to_integer.unscale(c[axis]);  // X / W scales like a coordinate: undo the scaling of the inputs
+    }
+    return c;
+  }
+
   /// Doubles within a few ulps: from the filter when its enclosure is within
   /// 4 ulps of its midpoint, else from intervals recomputed from the defining
   /// doubles, else the exact coordinates rounded once (at most half an ulp).
@@ -182,18 +198,13 @@ struct Staged_implicit_policy {
       const Approximate_point_3 interval = approximate_from_enclosure(
           homogeneous_coordinates<Interval>(a, [](double v) { return Interval(v); }));
       if (close(interval)) return interval;
-      const std::array<const Point*, 1> one{&a};
-      const Scaled_integers to_integer(one);
-      const Homogeneous_3<mpz_class> h = homogeneous_coordinates<mpz_class>(a, to_integer);
+      const std::array<mpq_class, 3> c = exact_coordinates(a);
       Approximate_point_3 r;
       double error = 0;
       double* out[3] = {&r.point.x, &r.point.y, &r.point.z};
       for (int axis = 0; axis < 3; ++axis) {
-        mpq_class c(h[axis], h.w);
-        c.canonicalize();
-        to_integer.unscale(c);  // X / W scales like a coordinate: undo the scaling of the inputs
-        *out[axis] = round_rational<double>(c, Rounding::to_nearest);
-        error = std::max({error, sub_up(upper_double(c), *out[axis]), sub_up(*out[axis], lower_double(c))});
+        *out[axis] = round_rational<double>(c[axis], Rounding::to_nearest);
+        error = std::max({error, sub_up(upper_double(c[axis]), *out[axis]), sub_up(*out[axis], lower_double(c[axis]))});
       }
       r.error = error;
       return r;

@@ -1,0 +1,236 @@
+// relgeo_boolean_benchmark: relgeo::boolean under its kernels against CGAL's
+// corefinement (Epick, Epeck) on the same operands, in one run.
+//
+// Cases: two offset 20K-triangle spheres; CGAL's elephant against a rotated
+// copy; CGAL's armadillo against a 20K-triangle sphere; a 10^6-triangle pair
+// (two offset tori of 5 x 10^5 triangles each). Operations: union,
+// intersection, difference. Each subject runs `--relgeo_repetitions` times
+// (default 3); the table gives the minimum time, its ratio to the peer
+// (CGAL Epick for relgeo's double kernels, CGAL Epeck for Exact_kernel),
+// whether the output is a closed oriented manifold, and, measured once in a
+// forked process per subject, the peak memory above the operands.
+//
+// Flags (besides Google Benchmark's): --relgeo_large (also run Epeck and the
+// exact kernel on the 10^6 pair), --relgeo_memory=false, --relgeo_repetitions=N.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <map>
+
+#include "boolean_benchmark.h"
+#include "common/command_line.h"
+#include "relgeo/boolean.h"
+#include "relgeo/kernel.h"
+#include "relgeo/mesh/mesh_io.h"
+#include "relgeo/mesh/validity.h"
+#include "../../test/boolean/boolean_inputs.h"
+
+namespace relgeo_bench {
+
+bool closed_oriented_manifold(const Mesh& m) {
+  const relgeo::Mesh_report r = relgeo::check_mesh<relgeo::Filtered_exact_kernel>(m, {.check_collinear_faces = false});
+  return r.is_closed() && r.is_manifold() && r.is_consistently_oriented();
+}
+double volume(const Mesh& m) { return relgeo::test::volume(m); }
+
+namespace {
+
+Mesh data_mesh(const char* name) {
+  return relgeo::read_mesh(std::string(RELGEO_CGAL_MESH_DIR) + "/" + name);
+}
+// m scaled to fit the box of `like` and moved by `shift` (in units of its size).
+Mesh fitted(const Mesh& m, const Mesh& like, double shift) {
+  const auto box = [](const Mesh& x) {
+    std::array<double, 6> b{1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
+    for (const auto& p : x.vertices) {
+      const double c[3] = {p.x, p.y, p.z};
+      for (int i = 0; i < 3; ++i) b[i] = std::min(b[i], c[i]), b[3 + i] = std::max(b[3 + i], c[i]);
+    }
+    return b;
+  };
+  const auto bm = box(m), bl = box(like);
+  const double sm = std::max({bm[3] - bm[0], bm[4] - bm[1], bm[5] - bm[2]});
+  const double sl = std::max({bl[3] - bl[0], bl[4] - bl[1], bl[5] - bl[2]});
+  Mesh r = m;
+  for (auto& p : r.vertices) {
+    p.x = (p.x - (bm[0] + bm[3]) / 2) * sl / sm * 0.6 + (bl[0] + bl[3]) / 2 + shift * sl;
+    p.y = (p.y - (bm[1] + bm[4]) / 2) * sl / sm * 0.6 + (bl[1] + bl[4]) / 2;
+    p.z = (p.z - (bm[2] + bm[5]) / 2) * sl / sm * 0.6 + (bl[2] + bl[5]) / 2;
+  }
+  return r;
+}
+
+}  // namespace
+
+const std::vector<Boolean_case>& boolean_cases() {
+  using namespace relgeo::test;
+  static const std::vector<Boolean_case> cases{
+      {"spheres-20K", [] { return std::pair{icosphere(5), icosphere(5, {0.5, 0.3, 0.2}, 0.9)}; }, false},
+      {"elephant-rotated", [] {
+         const Mesh e = data_mesh("elephant.off");
+         return std::pair{e, moved(e, 0.5, 0.3, {0.02, 0.01, 0.005})};
+       }, false},
+      {"armadillo-sphere", [] {
+         const Mesh a = data_mesh("armadillo.off");
+         return std::pair{a, fitted(icosphere(5), a, 0.1)};
+       }, false},
+      {"tori-1M", [] { return std::pair{torus(1, 0.4, 500, 500), torus(1, 0.4, 500, 500, {0.3, 0.2, 0.1})}; }, true},
+  };
+  return cases;
+}
+
+const std::pair<Mesh, Mesh>& operands(const std::string& name) {
+  static std::map<std::string, std::pair<Mesh, Mesh>> built;
+  auto it = built.find(name);
+  if (it != built.end()) return it->second;
+  for (const auto& c : boolean_cases())
+    if (c.name == name) return built[name] = c.build();
+  static const std::pair<Mesh, Mesh> none;
+  return none;
+}
+
+namespace {
+
+template <class K>
+std::function<Run_outcome()> relgeo_run(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op, bool checks) {
+  return [&a, &b, op, checks] {
+    const auto r = relgeo::boolean(a, b, op, K{}, {.check_operands = checks, .check_self_intersections = checks});
+    return Run_outcome{r.mesh.faces.size(), r.ok() && closed_oriented_manifold(r.mesh), volume(r.mesh)};
+  };
+}
+
+std::vector<Subject> subjects() {
+  std::vector<Subject> s{
+      {"relgeo filtered", [](const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
+         return relgeo_run<relgeo::Filtered_exact_kernel>(a, b, op, true);
+       }, false, "CGAL::corefine Epick"},
+      {"relgeo filtered, no operand check", [](const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
+         return relgeo_run<relgeo::Filtered_exact_kernel>(a, b, op, false);
+       }, false, "CGAL::corefine Epick"},
+      {"relgeo exact", [](const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
+         return relgeo_run<relgeo::Exact_kernel>(a, b, op, true);
+       }, true, "CGAL::corefine Epeck"},
+  };
+  for (auto& c : cgal_subjects()) s.push_back(std::move(c));
+  return s;
+}
+
+constexpr relgeo::Boolean_operation kOps[] = {relgeo::Boolean_operation::union_of,
+                                              relgeo::Boolean_operation::intersection,
+                                              relgeo::Boolean_operation::difference};
+
+struct Key {
+  std::string c, op, subject;
+  auto operator<=>(const Key&) const = default;
+};
+struct Figure {
+  double seconds = 1e300;
+  Run_outcome outcome;
+  double peak_mb = -1;
+};
+std::map<Key, Figure> figures;
+
+std::size_t proc_status_bytes(const char* key) {
+  std::ifstream f("/proc/self/status");
+  std::string line;
+  const std::size_t k = std::strlen(key);
+  while (std::getline(f, line))
+    if (line.compare(0, k, key) == 0 && line.size() > k && line[k] == ':')
+      return static_cast<std::size_t>(std::strtoull(line.c_str() + k + 1, nullptr, 10)) * 1024;
+  return 0;
+}
+
+// Peak resident memory above what the prepared operands use, in a forked child.
+double peak_memory_mb(const std::function<Run_outcome()>& run) {
+  int fds[2];
+  if (pipe(fds) != 0) return -1;
+  std::fflush(stdout);
+  const pid_t pid = fork();
+  if (pid < 0) return -1;
+  if (pid == 0) {
+    close(fds[0]);
+    {
+      std::ofstream clear("/proc/self/clear_refs");
+      clear << "5" << std::flush;  // VmHWM := VmRSS
+    }
+    const double before = static_cast<double>(proc_status_bytes("VmRSS"));
+    (void)run();
+    const double extra = (static_cast<double>(proc_status_bytes("VmHWM")) - before) / 1048576.0;
+    const ssize_t w = write(fds[1], &extra, sizeof extra);
+    _exit(w == sizeof extra ? 0 : 1);
+  }
+  close(fds[1]);
+  double mb = -1;
+  if (read(fds[0], &mb, sizeof mb) != sizeof mb) mb = -1;
+  close(fds[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return mb;
+}
+
+void register_all(int repetitions, bool large, bool memory) {
+  for (const auto& c : boolean_cases())
+    for (relgeo::Boolean_operation op : kOps)
+      for (const Subject& s : subjects()) {
+        if (c.large && s.exact && !large) continue;
+        const std::string name = c.name + "/" + std::string(relgeo::to_string(op)) + "/" + s.name;
+        benchmark::RegisterBenchmark(name.c_str(), [c, op, s, memory](benchmark::State& state) {
+          const auto& [a, b] = operands(c.name);
+          if (a.faces.empty()) {
+            state.SkipWithError("operands not available (CGAL's data set?)");
+            return;
+          }
+          Figure& f = figures[{c.name, std::string(relgeo::to_string(op)), s.name}];
+          for (auto _ : state) {
+            state.PauseTiming();
+            const auto run = s.prepare(a, b, op);
+            state.ResumeTiming();
+            const auto t0 = std::chrono::steady_clock::now();
+            const Run_outcome o = run();
+            const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            if (t < f.seconds) f.seconds = t, f.outcome = o;
+          }
+          if (memory && f.peak_mb < 0) {
+            const auto run = s.prepare(a, b, op);
+            f.peak_mb = peak_memory_mb(run);
+          }
+        })->Iterations(1)->Repetitions(repetitions)->Unit(benchmark::kMillisecond)->ReportAggregatesOnly(true);
+      }
+}
+
+void print_table() {
+  std::printf("\n%-18s %-13s %-36s %10s %8s %6s %9s %8s\n", "case", "operation", "subject", "min ms", "ratio", "valid",
+              "faces", "peak MB");
+  for (const auto& [k, f] : figures) {
+    std::string peer;
+    for (const Subject& s : subjects())
+      if (s.name == k.subject) peer = s.peer;
+    const auto p = figures.find({k.c, k.op, peer});
+    const double ratio = p == figures.end() ? 1.0 : f.seconds / p->second.seconds;
+    std::printf("%-18s %-13s %-36s %10.1f %8.3f %6s %9zu %8.1f\n", k.c.c_str(), k.op.c_str(), k.subject.c_str(),
+                1e3 * f.seconds, ratio, f.outcome.valid ? "yes" : "NO", f.outcome.faces, f.peak_mb);
+  }
+}
+
+}  // namespace
+}  // namespace relgeo_bench
+
+int main(int argc, char** argv) {
+  relgeo_bench::Command_line args(argc, argv);
+  const bool large = args.has("--relgeo_large");
+  const bool memory = args.value("--relgeo_memory") != "false";
+  const std::string reps = args.value("--relgeo_repetitions");
+  args.erase("--relgeo_large");
+  args.erase("--relgeo_memory");
+  args.erase("--relgeo_repetitions");
+  if (!args.initialize()) return 2;
+  relgeo_bench::register_all(reps.empty() ? 3 : std::stoi(reps), large, memory);
+  const std::size_t ran = benchmark::RunSpecifiedBenchmarks();
+  relgeo_bench::print_table();
+  return relgeo_bench::finish(ran, argv[0]);
+}

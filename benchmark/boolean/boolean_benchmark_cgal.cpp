@@ -1,0 +1,57 @@
+// The CGAL subjects of relgeo_boolean_benchmark: corefine_and_compute_union /
+// intersection / difference on Surface_mesh, with Epick and with Epeck, on
+// the same operands (converted before timing).
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <memory>
+#include <utility>
+
+#include "boolean_benchmark.h"
+
+namespace relgeo_bench {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+template <class K>
+CGAL::Surface_mesh<typename K::Point_3> surface(const Mesh& m) {
+  CGAL::Surface_mesh<typename K::Point_3> s;
+  std::vector<typename CGAL::Surface_mesh<typename K::Point_3>::Vertex_index> v;
+  for (const auto& p : m.vertices) v.push_back(s.add_vertex(typename K::Point_3(p.x, p.y, p.z)));
+  for (const auto& f : m.faces) s.add_face(v[f[0]], v[f[1]], v[f[2]]);
+  return s;
+}
+
+// The Surface_mesh operands are built before the timed run (corefinement
+// changes them, so each run gets its own).
+template <class K>
+std::function<Run_outcome()> corefine(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
+  auto operands = std::make_shared<std::pair<CGAL::Surface_mesh<typename K::Point_3>, CGAL::Surface_mesh<typename K::Point_3>>>(
+      surface<K>(a), surface<K>(b));
+  return [operands, op] {
+    auto& [sa, sb] = *operands;
+    CGAL::Surface_mesh<typename K::Point_3> out;
+    bool ok = false;
+    switch (op) {
+      case relgeo::Boolean_operation::union_of: ok = PMP::corefine_and_compute_union(sa, sb, out); break;
+      case relgeo::Boolean_operation::intersection: ok = PMP::corefine_and_compute_intersection(sa, sb, out); break;
+      default: ok = PMP::corefine_and_compute_difference(sa, sb, out);
+    }
+    Run_outcome r;
+    r.faces = out.number_of_faces();
+    r.valid = ok && CGAL::is_closed(out) && out.is_valid();
+    return r;
+  };
+}
+
+}  // namespace
+
+std::vector<Subject> cgal_subjects() {
+  return {{"CGAL::corefine Epick", corefine<CGAL::Epick>, false, ""},
+          {"CGAL::corefine Epeck", corefine<CGAL::Epeck>, true, ""}};
+}
+
+}  // namespace relgeo_bench

@@ -12,6 +12,7 @@
 //
 // Flags (besides Google Benchmark's): --relgeo_large (also run Epeck and the
 // exact kernel on the 10^6 pair), --relgeo_memory=false, --relgeo_repetitions=N.
+#include <malloc.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -154,6 +155,7 @@ double peak_memory_mb(const std::function<Run_outcome()>& run) {
   if (pid < 0) return -1;
   if (pid == 0) {
     close(fds[0]);
+    malloc_trim(0);  // the parent's free heap back to the system: it is not the run's memory
     {
       std::ofstream clear("/proc/self/clear_refs");
       clear << "5" << std::flush;  // VmHWM := VmRSS

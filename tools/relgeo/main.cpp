@@ -77,6 +77,10 @@ int run(int argc, char** argv) {
                   "Loop subdivision of a mesh file under a kernel: refined or limit mesh, its distance to the "
                   "exact limit surface, and (--bounds) error bounds of the limit mesh (thesis Sec. 5.4.1)",
                   subdivide_help_footer(), &declare_subdivide_options, &run_subdivide_command),
+      add_command(app, "boolean",
+                  "the Boolean (union, intersection, difference, xor) of two closed triangle meshes under a "
+                  "kernel: exact under the filtered and exact kernels, validated, optionally against CGAL's",
+                  boolean_help_footer(), &declare_boolean_options, &run_boolean_command),
       add_command(app, "experiment",
                   "the kernel-comparison suite: tables on stdout; JSON, pictures and index.html in a results "
                   "folder",

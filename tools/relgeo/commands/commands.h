@@ -3,6 +3,7 @@
 // (command.cpp) and its help footer. main.cpp registers each in one line.
 #pragma once
 
+#include "commands/boolean/command.h"
 #include "commands/experiment/command.h"
 #include "commands/extrusion/command.h"
 #include "commands/hull/command.h"

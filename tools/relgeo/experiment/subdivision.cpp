@@ -24,7 +24,7 @@
 #include "commands/subdivide/facade.h"
 #include "commands/subdivide/report.h"
 #include "experiment/section.h"
-#include "experiment/subdivision_render.h"
+#include "render/mesh_render.h"
 
 namespace relgeo::tool {
 

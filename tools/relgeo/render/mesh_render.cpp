@@ -1,5 +1,5 @@
-// tools/relgeo/experiment/subdivision_render.cpp
-#include "experiment/subdivision_render.h"
+// tools/relgeo/render/mesh_render.cpp
+#include "render/mesh_render.h"
 
 #include <algorithm>
 #include <array>
@@ -73,6 +73,10 @@ io::Image render_mesh(const Mesh_double& mesh, const Render_options& o, const Me
     if (!(nl > 0)) continue;
     const double shade = 0.35 + 0.65 * std::abs(n.x * light.x + n.y * light.y + n.z * light.z) / (nl * ll);
     Rgb base{200, 200, 205};
+    if (!o.face_groups.empty() && o.face_values.empty()) {
+      static const Rgb groups[4] = {{205, 205, 210}, {130, 170, 225}, {230, 190, 120}, {160, 210, 150}};
+      base = groups[std::size_t(o.face_groups[f]) % 4];
+    }
     if (!o.face_values.empty()) {
       const double v = o.face_values[f];
       base = ramp(vhi > vlo ? (std::log(std::max(v, 1e-300)) - vlo) / (vhi - vlo) : 0.5);
@@ -108,6 +112,24 @@ io::Image render_mesh(const Mesh_double& mesh, const Render_options& o, const Me
           if (a.z + u * (b.z - a.z) >= depth[i] - zs) img.pixels[i] = Rgb{30, 30, 40};
         }
       }
+  }
+  if (o.highlight_creases) {  // visible crease edges, red, two pixels wide
+    const double zs = 2e-3 * std::max(hi[0] - lo[0], hi[1] - lo[1]) * scale;
+    for (const Edge& e : mesh.tags.creases()) {
+      const V3 &a = s[e.a], &b = s[e.b];
+      const int steps = std::max(1, int(std::ceil(std::max(std::abs(b.x - a.x), std::abs(b.y - a.y)))));
+      for (int t = 0; t <= steps; ++t) {
+        const double u = double(t) / steps;
+        const int x = int(a.x + u * (b.x - a.x)), y = int(a.y + u * (b.y - a.y));
+        for (int dx = 0; dx < 2; ++dx)
+          for (int dy = 0; dy < 2; ++dy) {
+            const int px = x + dx, py = y + dy;
+            if (px < 0 || py < 0 || px >= o.width || py >= o.height) continue;
+            const std::size_t i = std::size_t(py) * o.width + px;
+            if (a.z + u * (b.z - a.z) >= depth[i] - zs) img.pixels[i] = Rgb{210, 30, 30};
+          }
+      }
+    }
   }
   if (bar) {  // colour bar: value_min (left) .. value_max (right), log scale
     for (int y = o.height - bar + 6; y < o.height - 8; ++y)

@@ -1,15 +1,19 @@
-// tools/relgeo/experiment/subdivision_render.h — a small orthographic renderer for the
-// pictures of the subdivision experiment: flat shading, z-buffer, optional
-// wire frame, optional colour per face from a value (bound widths).
+// tools/relgeo/render/mesh_render.h — a small orthographic renderer for the
+// tool's pictures of meshes (subdivision, Booleans): flat shading, z-buffer,
+// optional wire frame, optional colour per face from a value (bound widths),
+// optional highlighted edges (intersection curves).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "commands/subdivide/facade.h"
 #include "relgeo/io/png.h"
+#include "relgeo/kernel/point.h"
+#include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::tool {
+
+using Mesh_double = Triangle_mesh<Point_3<double>>;
 
 struct Render_options {
   int width = 520, height = 520;
@@ -20,6 +24,12 @@ struct Render_options {
   std::vector<double> face_values;
   double value_min = 0, value_max = 1;
   std::string legend;  ///< drawn as a colour bar at the bottom when values are given
+  /// Edges drawn over the faces in red, two pixels wide (the mesh's creases
+  /// when `highlight_creases`).
+  bool highlight_creases = false;
+  /// Per face colour by group (e.g. which operand a Boolean's face comes
+  /// from); empty: grey. Ignored when face_values is given.
+  std::vector<int> face_groups;
 };
 
 /// The picture of a triangle mesh. `frame` (optional) fixes the view box so

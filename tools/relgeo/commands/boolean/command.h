@@ -1,0 +1,32 @@
+// tools/relgeo/commands/boolean/command.h — `relgeo boolean`.
+#pragma once
+
+#include <string>
+
+#include "cli/text.h"
+
+namespace CLI {
+class App;
+}  // namespace CLI
+
+namespace relgeo::tool {
+
+struct Boolean_command_options {
+  std::string op = "union";       ///< union | intersection | difference | xor
+  std::string kernel = "filtered";
+  std::string a, b;               ///< operand mesh files (OFF, OBJ, PLY, STL)
+  std::string output;             ///< result mesh file, empty for none
+  std::string tags_output;        ///< the intersection curves as a crease-tag side file
+  std::string report;             ///< JSON report file, empty for none
+  std::string png;                ///< picture of the result with its curves drawn
+  std::string oracle;             ///< "cgal": compare with CGAL's corefinement (Epeck)
+  bool skip_self_intersection_check = false;
+  unsigned levels = 0;            ///< Booleans of Loop subdivision solids (not yet)
+  Format format = Format::text;
+};
+
+int run_boolean_command(const Boolean_command_options& options, Streams io);
+std::string boolean_help_footer();
+void declare_boolean_options(CLI::App& cmd, Boolean_command_options& options);
+
+}  // namespace relgeo::tool

@@ -1,0 +1,50 @@
+// tools/relgeo/commands/boolean/options.cpp — `relgeo boolean`'s options and help.
+#include "cli/options.h"
+#include "commands/boolean/command.h"
+#include "commands/boolean/facade.h"
+
+namespace relgeo::tool {
+
+std::string boolean_help_footer() {
+  std::string kernels;
+  for (const std::string& n : boolean_kernel_names()) kernels += (kernels.empty() ? "" : ", ") + n;
+  return "\nThe regularised Boolean of the solids bounded by two closed triangle meshes (OFF, OBJ, PLY, STL), exact "
+         "under the filtered and exact kernels (relgeo/boolean.h, doc/boolean.md).\n"
+         "Kernels: " + kernels + " (default filtered).\n"
+         "Operands that are open, non-manifold, misoriented, degenerate, non-finite or self-intersecting are refused "
+         "(exit 2, naming the defect and where) before any work; --skip-self-intersection-check leaves out the most "
+         "expensive of these checks.\n"
+         "Fail-safe and interval kernels give the exact result or fail naming the face pairs they cannot decide "
+         "(exit 1); naive kernels give what their arithmetic gives, and the validation says what is wrong.\n"
+         "\nOutputs: --output the result (its format from the extension), --tags-output the intersection curves "
+         "as crease tags (one 'e a b' line per edge), --report the JSON report, --png a picture (faces of A grey, "
+         "of B blue, curves red).\n"
+         "--oracle cgal: CGAL's corefinement with Epeck on the same operands: its volume, the volume of the "
+         "symmetric difference of the two results (relgeo's exact Boolean) and their Hausdorff distance.\n"
+         "\nJSON fields: operation, kernel, kernel_model, certified, status, failure, undecided_pairs, operands, "
+         "output, validation {closed, edge_manifold, vertex_manifold, oriented, no_degenerate_faces, "
+         "self_intersecting_pairs, euler_characteristic, components, volume, ...}, rounding_error, perturbations, "
+         "largest_perturbation, counts, time_s {check, broad_phase, narrow_phase, retriangulation, labelling, "
+         "assembly, total}, [oracle].\n"
+         "A symmetric difference (xor) touches itself along the intersection curves: its non-manifold edges are "
+         "expected.\n" +
+         std::string(exit_codes_text);
+}
+
+void declare_boolean_options(CLI::App& cmd, Boolean_command_options& o) {
+  cmd.add_option("a", o.a, "the first operand's mesh file")->type_name("A");
+  cmd.add_option("b", o.b, "the second operand's mesh file")->type_name("B");
+  cmd.add_option("--op", o.op, "union, intersection, difference (A - B) or xor")->default_str("union");
+  add_kernel_option(cmd, o.kernel, "filtered");
+  add_output_option(cmd, o.output, "output", "write the result mesh (format from the extension)");
+  add_output_option(cmd, o.tags_output, "tags-output", "write the intersection curves as a crease-tag side file");
+  add_output_option(cmd, o.report, "report", "write the JSON report");
+  add_output_option(cmd, o.png, "png", "write a picture of the result with its intersection curves");
+  cmd.add_option("--oracle", o.oracle, "cgal: compare with CGAL's corefinement (Epeck)")->type_name("cgal");
+  cmd.add_flag("--skip-self-intersection-check", o.skip_self_intersection_check,
+               "do not test the operands for self-intersections (the other checks still run)");
+  cmd.add_option("--levels", o.levels, "Booleans of Loop subdivision solids at level K (not available yet)");
+  add_format_option(cmd, o.format);
+}
+
+}  // namespace relgeo::tool

@@ -1,0 +1,103 @@
+// tools/relgeo/commands/boolean/oracle.cpp — CGAL's corefinement with Epeck
+// on the same operands, and how far relgeo's result is from it: the volume of
+// their symmetric difference (relgeo's exact Boolean of the two outputs) and
+// their symmetric Hausdorff distance (CGAL PMP, sampled). Its own
+// translation unit: the corefinement headers take a minute to compile.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "commands/boolean/facade.h"
+#include "relgeo/boolean.h"
+
+namespace relgeo::tool {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+template <class K>
+CGAL::Surface_mesh<typename K::Point_3> surface(const Mesh_double& m) {
+  CGAL::Surface_mesh<typename K::Point_3> s;
+  std::vector<typename CGAL::Surface_mesh<typename K::Point_3>::Vertex_index> v;
+  for (const auto& p : m.vertices) v.push_back(s.add_vertex(typename K::Point_3(p.x, p.y, p.z)));
+  for (const auto& f : m.faces) s.add_face(v[f[0]], v[f[1]], v[f[2]]);
+  return s;
+}
+
+Mesh_double doubles(const CGAL::Surface_mesh<CGAL::Epeck::Point_3>& s) {
+  Mesh_double m;
+  std::vector<Index> id(s.number_of_vertices());
+  for (auto v : s.vertices()) {
+    id[v.idx()] = static_cast<Index>(m.vertices.size());
+    const auto& p = s.point(v);
+    m.vertices.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+  }
+  for (auto f : s.faces()) {
+    Triangle t;
+    int k = 0;
+    for (auto v : s.vertices_around_face(s.halfedge(f))) t[k++] = id[v.idx()];
+    m.faces.push_back(t);
+  }
+  return m;
+}
+
+}  // namespace
+
+Oracle_comparison compare_with_cgal(const Mesh_double& a, const Mesh_double& b, Boolean_operation op,
+                                    const Mesh_double& result) {
+  using Epeck = CGAL::Epeck;
+  Oracle_comparison c;
+  const auto corefine = [&](Boolean_operation o, CGAL::Surface_mesh<Epeck::Point_3>& out) {
+    auto sa = surface<Epeck>(a), sb = surface<Epeck>(b);
+    switch (o) {
+      case Boolean_operation::union_of: return PMP::corefine_and_compute_union(sa, sb, out);
+      case Boolean_operation::intersection: return PMP::corefine_and_compute_intersection(sa, sb, out);
+      default: return PMP::corefine_and_compute_difference(sa, sb, out);
+    }
+  };
+  Mesh_double cgal;
+  if (op == Boolean_operation::symmetric_difference) {  // CGAL has none: (A - B) and (B - A) side by side
+    CGAL::Surface_mesh<Epeck::Point_3> ab, ba;
+    auto sa = surface<Epeck>(a), sb = surface<Epeck>(b), sa2 = surface<Epeck>(a), sb2 = surface<Epeck>(b);
+    c.cgal_ok = PMP::corefine_and_compute_difference(sa, sb, ab) && PMP::corefine_and_compute_difference(sb2, sa2, ba);
+    if (!c.cgal_ok) return c;
+    c.cgal_volume = CGAL::to_double(PMP::volume(ab)) + CGAL::to_double(PMP::volume(ba));
+    cgal = doubles(ab);
+    const Mesh_double second = doubles(ba);
+    const Index offset = static_cast<Index>(cgal.vertices.size());
+    cgal.vertices.insert(cgal.vertices.end(), second.vertices.begin(), second.vertices.end());
+    for (const auto& f : second.faces) cgal.faces.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+  } else {
+    CGAL::Surface_mesh<Epeck::Point_3> out;
+    c.cgal_ok = corefine(op, out);
+    if (!c.cgal_ok) return c;
+    c.cgal_volume = CGAL::to_double(PMP::volume(out));
+    cgal = doubles(out);
+  }
+  c.cgal_faces = cgal.faces.size();
+  if (!result.faces.empty() && !cgal.faces.empty()) {
+    const auto r = surface<CGAL::Epick>(result), o = surface<CGAL::Epick>(cgal);
+    c.hausdorff = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
+        r, o, CGAL::parameters::number_of_points_per_area_unit(4000), CGAL::parameters::number_of_points_per_area_unit(4000));
+  }
+  // The volume of the difference between the two solids, by relgeo's exact
+  // Boolean (operands not checked: a rounded output may touch itself).
+  if (op != Boolean_operation::symmetric_difference) {
+    const auto x = relgeo::boolean(result, cgal, Boolean_operation::symmetric_difference, Filtered_exact_kernel{},
+                                   Boolean_options{.check_operands = false});
+    if (x.ok()) {
+      double v = 0;
+      for (const auto& f : x.mesh.faces) {
+        const auto &p = x.mesh.vertices[f[0]], &q = x.mesh.vertices[f[1]], &r = x.mesh.vertices[f[2]];
+        v += p.x * (q.y * r.z - q.z * r.y) - p.y * (q.x * r.z - q.z * r.x) + p.z * (q.x * r.y - q.y * r.x);
+      }
+      c.symmetric_difference_volume = std::abs(v / 6);
+    }
+  }
+  return c;
+}
+
+}  // namespace relgeo::tool

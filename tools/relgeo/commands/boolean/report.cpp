@@ -1,0 +1,124 @@
+// tools/relgeo/commands/boolean/report.cpp
+#include "commands/boolean/report.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace relgeo::tool {
+
+namespace {
+
+io::Json operand(const std::string& file, const Mesh_double& m) {
+  double v = 0;
+  for (const auto& f : m.faces) {
+    const auto &p = m.vertices[f[0]], &q = m.vertices[f[1]], &r = m.vertices[f[2]];
+    v += p.x * (q.y * r.z - q.z * r.y) - p.y * (q.x * r.z - q.z * r.x) + p.z * (q.x * r.y - q.y * r.x);
+  }
+  return {{"file", file}, {"vertices", m.vertices.size()}, {"faces", m.faces.size()}, {"volume", io::json_measure(v / 6)}};
+}
+
+}  // namespace
+
+io::Json boolean_report_json(const Boolean_report_input& in) {
+  const Boolean_run& r = *in.run;
+  const Mesh_checks& c = *in.checks;
+  io::Json j;
+  j["operation"] = in.operation;
+  j["kernel"] = r.kernel;
+  j["kernel_model"] = r.kernel_model;
+  j["certified"] = r.certified;
+  j["status"] = r.ok ? "ok" : "failed";
+  j["failure"] = r.failure;
+  io::Json pairs = io::Json::array();
+  for (std::size_t i = 0; i < r.undecided_pairs.size() && i < 100; ++i)
+    pairs.push_back({r.undecided_pairs[i].first, r.undecided_pairs[i].second});
+  j["undecided_pairs"] = pairs;
+  j["operands"] = {{"a", operand(in.input_a, *in.a)}, {"b", operand(in.input_b, *in.b)}};
+  j["output"] = {{"vertices", r.output.vertices.size()}, {"faces", r.output.faces.size()},
+                 {"creases", r.output.tags.creases().size()}};
+  io::Json v;
+  v["closed"] = c.closed;
+  v["edge_manifold"] = c.non_manifold_edges == 0;
+  v["vertex_manifold"] = c.non_manifold_vertices == 0;
+  v["oriented"] = c.oriented;
+  v["no_degenerate_faces"] = c.no_degenerate_faces;
+  v["self_intersecting_pairs"] = c.self_intersecting_pairs ? io::Json(*c.self_intersecting_pairs) : io::Json(nullptr);
+  v["euler_characteristic"] = c.euler_characteristic;
+  v["components"] = c.components;
+  v["volume"] = io::json_measure(c.volume);
+  v["boundary_edges"] = c.boundary_edges;
+  v["non_manifold_edges"] = c.non_manifold_edges;
+  v["non_manifold_vertices"] = c.non_manifold_vertices;
+  v["degenerate_faces"] = c.degenerate_faces;
+  j["validation"] = v;
+  j["rounding_error"] = io::json_measure(r.rounding_error);
+  j["perturbations"] = r.perturbations;
+  j["largest_perturbation"] = io::json_measure(r.largest_perturbation);
+  j["counts"] = {{"candidate_pairs", r.counts.candidate_pairs},   {"intersecting_pairs", r.counts.intersecting_pairs},
+                 {"coplanar_pairs", r.counts.coplanar_pairs},     {"new_vertices", r.counts.new_vertices},
+                 {"split_faces", r.counts.split_faces},           {"patches", r.counts.patches}};
+  j["time_s"] = {{"check", r.time.check},         {"broad_phase", r.time.broad_phase},
+                 {"narrow_phase", r.time.narrow_phase}, {"retriangulation", r.time.retriangulation},
+                 {"labelling", r.time.labelling}, {"assembly", r.time.assembly},
+                 {"total", r.time.total()}};
+  if (in.oracle) {
+    const Oracle_comparison& o = *in.oracle;
+    j["oracle"] = {{"cgal_ok", o.cgal_ok},
+                   {"cgal_volume", io::json_measure(o.cgal_volume)},
+                   {"cgal_faces", o.cgal_faces},
+                   {"volume_difference", io::json_measure(c.volume - o.cgal_volume)},
+                   {"symmetric_difference_volume",
+                    o.symmetric_difference_volume ? io::json_measure(*o.symmetric_difference_volume) : io::Json(nullptr)},
+                   {"hausdorff", io::json_measure(o.hausdorff)}};
+  }
+  return j;
+}
+
+std::string boolean_report_text(const Boolean_report_input& in) {
+  const Boolean_run& r = *in.run;
+  const Mesh_checks& c = *in.checks;
+  std::ostringstream s;
+  char buf[256];
+  s << "operation        " << in.operation << " of " << in.input_a << " (" << in.a->faces.size() << " faces) and "
+    << in.input_b << " (" << in.b->faces.size() << " faces)\n";
+  s << "kernel           " << r.kernel << (r.certified ? " (certified)" : " (naive: answers may be wrong)") << "\n";
+  s << "status           " << (r.ok ? "ok" : "failed: " + r.failure) << "\n";
+  if (!r.undecided_pairs.empty()) s << "undecided pairs  " << r.undecided_pairs.size() << "\n";
+  s << "output           " << r.output.vertices.size() << " vertices, " << r.output.faces.size() << " faces, "
+    << r.output.tags.creases().size() << " crease edges (the intersection curves)\n";
+  std::snprintf(buf, sizeof buf, "%.17g", c.volume);
+  s << "volume           " << buf << "\n";
+  s << "validation       " << (c.closed ? "closed" : "OPEN") << ", " << (c.manifold ? "manifold" : "NON-MANIFOLD") << ", "
+    << (c.oriented ? "oriented" : "MISORIENTED") << ", "
+    << (c.no_degenerate_faces ? "no degenerate face" : std::to_string(c.degenerate_faces) + " degenerate faces (rounding)");
+  if (c.self_intersecting_pairs)
+    s << ", " << (*c.self_intersecting_pairs == 0 ? "no self-intersection" : std::to_string(*c.self_intersecting_pairs) + " self-intersecting pairs");
+  s << "\n";
+  s << "euler, components " << c.euler_characteristic << ", " << c.components << "\n";
+  std::snprintf(buf, sizeof buf, "%.3g", r.rounding_error);
+  s << "rounding error   " << buf << " (largest move of a new vertex to doubles)\n";
+  if (r.perturbations) {
+    std::snprintf(buf, sizeof buf, "%.3g", r.largest_perturbation);
+    s << "perturbations    " << r.perturbations << " pairs (largest rho " << buf << ")\n";
+  }
+  s << "pairs            " << r.counts.candidate_pairs << " candidates, " << r.counts.intersecting_pairs << " intersecting ("
+    << r.counts.coplanar_pairs << " coplanar); " << r.counts.new_vertices << " new vertices, " << r.counts.split_faces
+    << " faces split, " << r.counts.patches << " patches\n";
+  std::snprintf(buf, sizeof buf, "%.4f s (check %.4f, broad %.4f, narrow %.4f, retriangulation %.4f, labelling %.4f, assembly %.4f)",
+                r.time.total(), r.time.check, r.time.broad_phase, r.time.narrow_phase, r.time.retriangulation, r.time.labelling,
+                r.time.assembly);
+  s << "time             " << buf << "\n";
+  if (in.oracle) {
+    const Oracle_comparison& o = *in.oracle;
+    if (!o.cgal_ok) s << "oracle           CGAL's corefinement failed\n";
+    else {
+      std::snprintf(buf, sizeof buf, "CGAL Epeck volume %.17g, |difference| %.3g, symmetric difference %s, Hausdorff %.3g",
+                    o.cgal_volume, std::abs(c.volume - o.cgal_volume),
+                    o.symmetric_difference_volume ? std::to_string(*o.symmetric_difference_volume).c_str() : "n/a", o.hausdorff);
+      s << "oracle           " << buf << "\n";
+    }
+  }
+  return s.str();
+}
+
+}  // namespace relgeo::tool

@@ -1,0 +1,37 @@
+// tools/relgeo/commands/boolean/report.h — a Boolean as `relgeo boolean`
+// reports it: the JSON record and the readable summary.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "commands/boolean/facade.h"
+#include "relgeo/io/json.h"
+
+namespace relgeo::tool {
+
+struct Boolean_report_input {
+  std::string operation, input_a, input_b;
+  const Mesh_double* a = nullptr;
+  const Mesh_double* b = nullptr;
+  const Boolean_run* run = nullptr;
+  const Mesh_checks* checks = nullptr;
+  const Oracle_comparison* oracle = nullptr;  ///< with --oracle cgal
+};
+
+/// JSON fields: operation, kernel, kernel_model, certified, status,
+/// failure, undecided_pairs, operands {a, b: file, vertices, faces, volume},
+/// output {vertices, faces, creases}, validation {closed, edge_manifold,
+/// vertex_manifold, oriented, no_degenerate_faces, self_intersecting_pairs,
+/// euler_characteristic, components, volume, boundary_edges,
+/// non_manifold_edges, non_manifold_vertices, degenerate_faces},
+/// rounding_error, perturbations, largest_perturbation, counts
+/// {candidate_pairs, intersecting_pairs, coplanar_pairs, new_vertices,
+/// split_faces, patches}, time_s {check, broad_phase, narrow_phase,
+/// retriangulation, labelling, assembly, total}, [oracle {cgal_ok,
+/// cgal_volume, cgal_faces, volume_difference, symmetric_difference_volume,
+/// hausdorff}].
+io::Json boolean_report_json(const Boolean_report_input& in);
+std::string boolean_report_text(const Boolean_report_input& in);
+
+}  // namespace relgeo::tool

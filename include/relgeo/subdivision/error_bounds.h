@@ -70,6 +70,8 @@
 
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/errors.h"
+#include "relgeo/core/number_traits.h"
+#include "relgeo/core/rounding.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/box_spline.h"
 #include "relgeo/subdivision/limit_evaluation.h"
@@ -112,36 +114,23 @@ struct Loop_face_bound {
 
 namespace internal {
 
-/// min and max that stay enclosures for intervals.
+/// min and max that stay enclosures for intervals (Interval's min and max).
 template <class FT>
 FT min_of(const FT& a, const FT& b) {
-  if constexpr (requires { a.inf(); a.sup(); }) return FT(std::min(a.inf(), b.inf()), std::min(a.sup(), b.sup()));
+  if constexpr (is_interval_v<FT>) return min(a, b);
   else return b < a ? b : a;
 }
 template <class FT>
 FT max_of(const FT& a, const FT& b) {
-  if constexpr (requires { a.inf(); a.sup(); }) return FT(std::max(a.inf(), b.inf()), std::max(a.sup(), b.sup()));
+  if constexpr (is_interval_v<FT>) return max(a, b);
   else return a < b ? b : a;
-}
-/// A double <= (>=) the value (rounded outward).
-template <class FT>
-double lower_double(const FT& x) {
-  if constexpr (requires { x.inf(); }) return x.inf();
-  else if constexpr (std::is_same_v<FT, double>) return x;
-  else return std::nextafter(coordinate_to_double(x), -INFINITY);
-}
-template <class FT>
-double upper_double(const FT& x) {
-  if constexpr (requires { x.sup(); }) return x.sup();
-  else if constexpr (std::is_same_v<FT, double>) return x;
-  else return std::nextafter(coordinate_to_double(x), INFINITY);
 }
 /// a <= b possibly (exactly for exact types; with a relative tolerance for
 /// floating point, where excluding a candidate by rounding would be unsound
 /// and including one only loosens).
 template <class FT>
 bool possibly_le(const FT& a, const FT& b, double tol) {
-  if constexpr (requires { a.inf(); b.sup(); }) return a.inf() <= b.sup();
+  if constexpr (is_interval_v<FT>) return lower_double(a) <= upper_double(b);
   else if constexpr (std::is_floating_point_v<FT>) return a <= b + tol;
   else return !(b < a);
 }
@@ -275,14 +264,11 @@ bool tent_maximum(const std::vector<Affine_2<FT>>& f, const FT& amin, const FT& 
   };
   const auto intersect = [&](const Line& x, const Line& y) {
     const FT det = FT(FT(x.p * y.q) - FT(y.p * x.q));
-    if constexpr (requires { det.inf(); }) {
-      if (det.inf() == 0 && det.sup() == 0) return;
-      if (!(det.inf() > 0 || det.sup() < 0)) {
-        ok = false;
-        return;
-      }
-    } else {
-      if (det == FT(0)) return;
+    const Certified_sign det_sign = certified_sign(det);
+    if (det_sign == Certified_sign::zero) return;
+    if (is_interval_v<FT> && det_sign == Certified_sign::uncertain) {  // cannot tell: give up the tent
+      ok = false;
+      return;
     }
     consider(Tr::quotient(FT(FT(x.r * y.q) - FT(y.r * x.q)), det), Tr::quotient(FT(FT(x.p * y.r) - FT(y.p * x.r)), det));
   };
@@ -402,18 +388,8 @@ class Loop_error_bounds {
     FT operator()(const P3& x) const { return FT(dot(dir, x) + offset); }
   };
 
-  static bool certainly_zero_or_contains_zero(const FT& x) {
-    if constexpr (requires { x.inf(); }) return !(x.inf() > 0 || x.sup() < 0);
-    else return x == FT(0);
-  }
-  static bool certainly_positive(const FT& x) {
-    if constexpr (requires { x.inf(); }) return x.inf() > 0;
-    else return FT(0) < x;
-  }
-  static bool certainly_negative(const FT& x) {
-    if constexpr (requires { x.sup(); }) return x.sup() < 0;
-    else return x < FT(0);
-  }
+  static bool certainly_zero_or_contains_zero(const FT& x) { return !is_certain_nonzero(certified_sign(x)); }
+  static bool is_certain_nonzero(Certified_sign s) { return s == Certified_sign::positive || s == Certified_sign::negative; }
 
   void face_bounds(const Loop_limit_surface<K>& surface, Loop_weights<K>& w, const std::vector<P3>& p,
                    const std::vector<P3>& q, Index g, Loop_limit_mesh_bounds<K>& r) const {
@@ -422,7 +398,7 @@ class Loop_error_bounds {
     const P3 E1 = sub3(q1, q0), E2 = sub3(q2, q0), n = cross(E1, E2);
     const FT nn = dot(n, n);
     r.normal[g] = n;
-    const double len = std::sqrt(internal::coordinate_to_double(nn));
+    const double len = std::sqrt(nearest_double(nn));
     r.normal_length[g] = len;
     r.patch_kind[g] = surface.patch_kind(g);
     if (certainly_zero_or_contains_zero(nn) || !(len > 0)) {
@@ -521,16 +497,16 @@ class Loop_error_bounds {
       const auto negate = [](internal::Affine_2<FT> a) {
         return internal::Affine_2<FT>{FT(-a.tau), FT(-a.rho), FT(-a.sigma)};
       };
-      if (certainly_positive(kappa)) {
+      if (certified_sign(kappa) == Certified_sign::positive) {
         upper.push_back(bound_from(gp));
         lower.push_back(negate(bound_from(gm)));
-      } else if (certainly_negative(kappa)) {
+      } else if (certified_sign(kappa) == Certified_sign::negative) {
         upper.push_back(bound_from(gm));
         lower.push_back(negate(bound_from(gp)));
       }
     }
     const FT amin = alo[1], bmin = alo[2], s = FT(FT(1) - alo[3]);
-    const double tol = 1e-9 * (1 + std::abs(internal::coordinate_to_double(s)));
+    const double tol = 1e-9 * (1 + std::abs(nearest_double(s)));
     FT tu = U, tl = FT(-L);
     if (!internal::tent_maximum<FT, Tr>(upper, amin, bmin, s, tol, tu)) tu = U;
     if (!internal::tent_maximum<FT, Tr>(lower, amin, bmin, s, tol, tl)) tl = FT(-L);
@@ -566,8 +542,7 @@ class Loop_error_bounds {
     double lo, hi;
   };
   static Length_bounds length_bounds(const FT& nn) {
-    const double lo = internal::lower_double(nn), hi = internal::upper_double(nn);
-    return {lo > 0 ? std::nextafter(std::sqrt(lo), 0.0) : 0.0, std::nextafter(std::sqrt(hi), INFINITY)};
+    return {sqrt_down(lower_double(nn)), sqrt_up(upper_double(nn))};
   }
 
   // The heights [lo, hi] as signed distances t |n|, rounded outward (a
@@ -575,9 +550,9 @@ class Loop_error_bounds {
   // it; for a negative height the larger length gives the lower distance).
   static Loop_face_bound<FT> make_bound(const FT& lo, const FT& hi, const Length_bounds& len) {
     Loop_face_bound<FT> b{lo, hi, 0, 0};
-    const double l = internal::lower_double(lo), u = internal::upper_double(hi);
-    b.lower_distance = std::nextafter(l * (l >= 0 ? len.lo : len.hi), -INFINITY);
-    b.upper_distance = std::nextafter(u * (u >= 0 ? len.hi : len.lo), INFINITY);
+    const double l = lower_double(lo), u = upper_double(hi);
+    b.lower_distance = next_down(l * (l >= 0 ? len.lo : len.hi));
+    b.upper_distance = next_up(u * (u >= 0 ? len.hi : len.lo));
     return b;
   }
 
@@ -588,7 +563,7 @@ class Loop_error_bounds {
                                           const FT& L, const FT& U, double len) {
     using D3 = std::array<double, 3>;
     const auto d3 = [](const P3& a) -> D3 {
-      return {internal::coordinate_to_double(a.x), internal::coordinate_to_double(a.y), internal::coordinate_to_double(a.z)};
+      return {nearest_double(a.x), nearest_double(a.y), nearest_double(a.z)};
     };
     const auto sub = [](D3 a, D3 b) -> D3 { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
     const auto dt = [](D3 a, D3 b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
@@ -608,7 +583,7 @@ class Loop_error_bounds {
     const double tan_a = std::sqrt(std::max(0.0, 1 - phi * phi)) / std::max(phi, 1e-300);
     const D3 c = {(qs[0][0] + qs[1][0] + qs[2][0]) / 3, (qs[0][1] + qs[1][1] + qs[2][1]) / 3,
                   (qs[0][2] + qs[1][2] + qs[2][2]) / 3};
-    const double Ud = internal::upper_double(U) * len, Ld = internal::lower_double(L) * len;
+    const double Ud = upper_double(U) * len, Ld = lower_double(L) * len;
     std::vector<internal::Affine_2<double>> up{{Ud, 0, 0}}, dn{{-Ld, 0, 0}};
     for (int j = 0; j < 3; ++j) {
       D3 d = sub(c, qs[j]);

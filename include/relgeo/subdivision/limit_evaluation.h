@@ -53,6 +53,8 @@
 #include "relgeo/core/errors.h"
 #include "relgeo/core/interval.h"
 #include "relgeo/core/mpfr_number.h"
+#include "relgeo/core/number_traits.h"
+#include "relgeo/core/rounding.h"
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/mesh_topology.h"
@@ -499,17 +501,11 @@ inline bool limit_mask_is_exact(const Mesh_topology& t, const Loop_rule_data& d,
   return false;
 }
 
-/// |x| as a double, for pivot choice.
+/// |x| as a double, for pivot choice (an interval's largest magnitude).
 template <class FT>
 double magnitude(const FT& x) {
-  if constexpr (requires { x.inf(); x.sup(); }) return std::max(std::abs(x.inf()), std::abs(x.sup()));
-  else return std::abs(coordinate_to_double(x));
-}
-/// Whether x is certainly nonzero.
-template <class FT>
-bool certainly_nonzero(const FT& x) {
-  if constexpr (requires { x.inf(); x.sup(); }) return x.inf() > 0 || x.sup() < 0;
-  else return !(x == FT(0));
+  if constexpr (is_interval_v<FT>) return std::max(std::abs(lower_double(x)), std::abs(upper_double(x)));
+  else return std::abs(nearest_double(x));
 }
 
 /// Solves the m x m system A x = b (row-major) by Gaussian elimination with
@@ -523,16 +519,15 @@ std::vector<FT> solve_small_system(std::vector<FT> A, std::vector<FT> b) {
     std::size_t piv = c;
     for (std::size_t r = c + 1; r < m; ++r)
       if (magnitude(A[r * m + c]) > magnitude(A[piv * m + c])) piv = r;
-    if (!certainly_nonzero(A[piv * m + c]))
+    const Certified_sign pivot_sign = certified_sign(A[piv * m + c]);
+    if (pivot_sign == Certified_sign::zero || pivot_sign == Certified_sign::uncertain)
       throw Error(Error_code::computation_failure, "limit position: singular eigen-system");
     if (piv != c) {
       for (std::size_t k = 0; k < m; ++k) std::swap(A[c * m + k], A[piv * m + k]);
       std::swap(b[c], b[piv]);
     }
     for (std::size_t r = c + 1; r < m; ++r) {
-      if (!certainly_nonzero(A[r * m + c])) {
-        if constexpr (!requires { A[0].inf(); }) continue;
-      }
+      if (certified_sign(A[r * m + c]) == Certified_sign::zero) continue;  // nothing to eliminate
       const FT f = Tr::quotient(A[r * m + c], A[c * m + c]);
       for (std::size_t k = c; k < m; ++k) A[r * m + k] = FT(A[r * m + k] - FT(f * A[c * m + k]));
       b[r] = FT(b[r] - FT(f * b[c]));
@@ -650,29 +645,16 @@ std::vector<typename K::FT> exact_limit_values(const Mesh_topology& t, const Loo
   return out;
 }
 
-/// FT from an exact rational (parameters): rounded to nearest for floating
-/// types and MPFR, exact for mpq_class, an enclosure for intervals.
+/// FT from an exact rational (parameters), rounded once: to nearest for
+/// floating types and MPFR, exact for mpq_class, the tightest enclosure for
+/// intervals (Number_traits<FT>::from_rational); number types the layer
+/// cannot round to (CGAL's) get the nearest double.
 template <class FT>
 FT ft_from_rational(const mpq_class& q) {
-  if constexpr (std::is_same_v<FT, mpq_class>) {
-    return q;
-  } else if constexpr (std::is_same_v<FT, Interval>) {
-    const double d = q.get_d();  // truncated: within one ulp
-    if (mpq_class(d) == q) return Interval(d);
-    return Interval(std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY));
-  } else if constexpr (requires(FT r) { r.get(); FT::precision; }) {
-    FT r;
-    mpfr_set_q(const_cast<mpfr_ptr>(r.get()), q.get_mpq_t(), MPFR_RNDN);
-    return r;
-  } else if constexpr (std::is_same_v<FT, long double>) {
-    Mpfr_temp t(128);
-    mpfr_set_q(t.v, q.get_mpq_t(), MPFR_RNDN);
-    return mpfr_get_ld(t.v, MPFR_RNDN);
-  } else {
-    Mpfr_temp t(64);
-    mpfr_set_q(t.v, q.get_mpq_t(), MPFR_RNDN);
-    return FT(mpfr_get_d(t.v, MPFR_RNDN));
-  }
+  if constexpr (Number_traits<FT>::kind == Number_kind::other)
+    return FT(round_rational<double>(q, Rounding::to_nearest));
+  else
+    return Number_traits<FT>::from_rational(q, Rounding::to_nearest);
 }
 
 /// Whether the closed triangle u, v >= 0, u + v <= 1 contains (u, v), decided

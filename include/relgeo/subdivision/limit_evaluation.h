@@ -60,6 +60,7 @@
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/box_spline.h"
+#include "relgeo/subdivision/internal/loop_rules.h"
 #include "relgeo/subdivision/loop_masks.h"
 #include "relgeo/subdivision/loop_subdivision.h"
 #include "relgeo/subdivision/loop_weights.h"
@@ -111,52 +112,12 @@ struct Loop_limit_jet {
 
 namespace internal {
 
-/// The per-half-edge and per-vertex data the rules read, for a control mesh
-/// or a local patch: vertex kinds; whether each half-edge's edge is a crease
-/// (tagged or boundary); for the vertex at corner h % 3 of face h / 3 (the
-/// source of h), when it is a crease vertex or corner, the number of faces of
-/// its sector holding that face (0 otherwise).
-struct Loop_rule_data {
-  std::vector<Vertex_kind> kind;
-  std::vector<std::uint8_t> crease;
-  std::vector<Index> sector;
-  bool special(Index v) const { return kind[v] == Vertex_kind::crease || kind[v] == Vertex_kind::corner; }
-  friend bool operator==(const Loop_rule_data&, const Loop_rule_data&) = default;
-};
-
-inline Loop_rule_data loop_rule_data(const Mesh_topology& t, const Loop_features& f) {
-  Loop_rule_data d;
-  d.kind = f.vertex_kind;
-  const std::size_t nh = t.number_of_halfedges();
-  d.crease.resize(nh);
-  for (Index h = 0; h < nh; ++h) d.crease[h] = f.edge_is_crease[t.edge(h)];
-  d.sector.assign(nh, 0);
-  for (Index v = 0; v < t.number_of_vertices(); ++v) {
-    if (!f.is_special(v)) continue;
-    t.for_each_outgoing(v, [&](Index h) {
-      if (d.sector[h] != 0) return;
-      const Loop_sector s = loop_sector(t, f, v, h);
-      Index g = s.first;
-      for (Index i = 0; i < s.faces() && g != invalid_index; ++i, g = t.ccw_outgoing(g)) d.sector[g] = s.faces();
-    });
-  }
-  return d;
-}
-
 /// A control point of a regular patch: vertex a, or the ghost a + b - c.
 struct Patch_slot {
   Index a = invalid_index, b = invalid_index, c = invalid_index;
   bool is_ghost() const { return b != invalid_index; }
   friend bool operator==(const Patch_slot&, const Patch_slot&) = default;
 };
-
-/// BLZ's weight at a special vertex of a smooth edge is the standard 3/8
-/// exactly when its sector has 3 faces (crease vertex) or alpha / k = pi / 3
-/// (corner).
-inline bool blz_weight_is_standard(const Loop_options& o, Vertex_kind kind, Index k) {
-  if (kind == Vertex_kind::crease) return k == 3;
-  return 3 * o.corner_angle_num == o.corner_angle_den * static_cast<long>(k);
-}
 
 /// Whether the corner `corner` of face f is a regular vertex of the patch:
 /// smooth of valence 6 whose edges all follow the standard rule, or a crease
@@ -165,16 +126,8 @@ inline bool patch_corner_is_regular(const Mesh_topology& t, const Loop_rule_data
                                     Index f, int corner) {
   const Index h = 3 * f + Index(corner), a = t.source(h);
   switch (d.kind[a]) {
-    case Vertex_kind::smooth: {
-      if (t.is_boundary_vertex(a) || t.number_of_incident_faces(a) != 6) return false;
-      if (o.crease_rules != Loop_crease_rules::biermann_levin_zorin) return true;
-      bool ok = true;
-      t.for_each_outgoing(a, [&](Index g) {
-        const Index x = t.target(g);
-        if (d.special(x) && !blz_weight_is_standard(o, d.kind[x], d.sector[3 * (g / 3) + (g % 3 + 1) % 3])) ok = false;
-      });
-      return ok;
-    }
+    case Vertex_kind::smooth:
+      return !t.is_boundary_vertex(a) && t.number_of_incident_faces(a) == 6 && standard_weights_around(t, d, o, a);
     case Vertex_kind::crease: return d.sector[h] == 3;
     default: return false;
   }
@@ -239,64 +192,6 @@ inline Loop_patch_kind classify_loop_patch(const Mesh_topology& t, const Loop_ru
   }
   if (slots) *slots = s;
   return any_crease ? Loop_patch_kind::regular_crease : Loop_patch_kind::regular;
-}
-
-/// A weighted vertex of a stencil.
-template <class FT>
-using Weighted = std::pair<Index, FT>;
-
-/// Refinement stencil of vertex a (its fan must be complete in t).
-template <class K>
-void vertex_rule(const Mesh_topology& t, const Loop_rule_data& d, const Loop_weights<K>& w, Index a,
-                 std::vector<Weighted<typename K::FT>>& out) {
-  using FT = typename K::FT;
-  out.clear();
-  switch (d.kind[a]) {
-    case Vertex_kind::smooth:
-    case Vertex_kind::dart: {
-      const Index n = t.number_of_incident_faces(a);
-      out.emplace_back(a, w.centre(n));
-      t.for_each_outgoing(a, [&](Index h) { out.emplace_back(t.target(h), w.beta(n)); });
-      break;
-    }
-    case Vertex_kind::crease: {
-      out.emplace_back(a, w.three_quarters());
-      Index last = invalid_index;
-      t.for_each_outgoing(a, [&](Index h) {
-        if (d.crease[h]) out.emplace_back(t.target(h), w.eighth());
-        last = h;
-      });
-      if (t.is_boundary_vertex(a)) out.emplace_back(t.source(Mesh_topology::prev(last)), w.eighth());
-      break;
-    }
-    default: out.emplace_back(a, FT(w.one()));
-  }
-}
-
-/// Refinement stencil of the edge of half-edge h (both faces in t unless a crease).
-template <class K>
-void edge_rule(const Mesh_topology& t, const Loop_rule_data& d, const Loop_weights<K>& w, Index h,
-               std::vector<Weighted<typename K::FT>>& out) {
-  using FT = typename K::FT;
-  out.clear();
-  const Index a = t.source(h), b = t.target(h);
-  if (d.crease[h]) {
-    out.emplace_back(a, w.half()), out.emplace_back(b, w.half());
-    return;
-  }
-  const Index o = t.opposite(h);
-  if (o == invalid_index) throw Error(Error_code::computation_failure, "Loop local patch: missing face");
-  FT wa = w.three_eighths(), wb = w.three_eighths();
-  if (w.options().crease_rules == Loop_crease_rules::biermann_levin_zorin && d.special(a) != d.special(b)) {
-    const Index v = d.special(a) ? a : b;
-    const Index hv = v == a ? h : o;
-    const FT g = w.gamma(d.sector[hv], d.kind[v] == Vertex_kind::corner);
-    (v == a ? wa : wb) = FT(w.three_quarters() - g);
-    (v == a ? wb : wa) = g;
-  }
-  out.emplace_back(a, wa), out.emplace_back(b, wb);
-  out.emplace_back(t.target(Mesh_topology::next(h)), w.eighth());
-  out.emplace_back(t.target(Mesh_topology::next(o)), w.eighth());
 }
 
 /// A piece of a Loop mesh around one face: the face (faces[0], in its
@@ -368,38 +263,32 @@ Mesh_topology local_topology(const Loop_local_patch<FT>& P) {
 template <class K>
 std::array<Loop_local_patch<typename K::FT>, 4> refine_local_patch(
     const Loop_local_patch<typename K::FT>& P, const Mesh_topology& t, const Loop_weights<K>& w, unsigned which,
-    std::vector<std::vector<Weighted<typename K::FT>>>* stencils = nullptr) {
+    std::vector<Stencil<typename K::FT>>* stencils = nullptr) {
   using FT = typename K::FT;
   const Index nv = P.number_of_vertices(), ne = static_cast<Index>(t.number_of_edges());
   const Index nf = static_cast<Index>(P.faces.size());
   const std::size_t dim = P.dim;
   std::vector<FT> cv((std::size_t(nv) + ne) * dim);
   std::vector<std::uint8_t> done(std::size_t(nv) + ne, 0);
-  std::vector<Weighted<FT>> st;
-  std::vector<std::vector<Weighted<FT>>> used;  // per child vertex, when `stencils` is wanted
+  std::vector<Stencil<FT>> used;  // per child vertex, when `stencils` is wanted
   if (stencils) used.resize(std::size_t(nv) + ne);
-  const auto apply = [&](Index target) {
-    if (stencils) used[target] = st;
+  const auto apply = [&](Index target, Stencil<FT>&& st) {
     FT* out = cv.data() + std::size_t(target) * dim;
     for (std::size_t c = 0; c < dim; ++c) out[c] = FT(0);
-    for (const auto& [v, wt] : st) {
-      const FT* in = P.value(v);
-      for (std::size_t c = 0; c < dim; ++c) out[c] = FT(out[c] + FT(wt * in[c]));
+    for (std::size_t i = 0; i < st.vertices.size(); ++i) {
+      const FT* in = P.value(st.vertices[i]);
+      for (std::size_t c = 0; c < dim; ++c) out[c] = FT(out[c] + FT(st.weights[i] * in[c]));
     }
     done[target] = 1;
+    if (stencils) used[target] = std::move(st);
   };
   const auto do_edge = [&](Index h) {
     const Index e = t.edge(h);
-    if (done[nv + e]) return;
-    edge_rule(t, P.rules, w, h, st);
-    apply(nv + e);
+    if (!done[nv + e]) apply(nv + e, edge_point_stencil_of(t, P.rules, w, h));
   };
   for (int k = 0; k < 3; ++k) {
     const Index a = P.faces[0][k];
-    if (!done[a]) {
-      vertex_rule(t, P.rules, w, a, st);
-      apply(a);
-    }
+    if (!done[a]) apply(a, vertex_point_stencil_of(t, P.rules, w, a));
     Index last = invalid_index;
     t.for_each_outgoing(a, [&](Index h) {
       do_edge(h);
@@ -488,15 +377,7 @@ inline bool limit_mask_is_exact(const Mesh_topology& t, const Loop_rule_data& d,
     case Vertex_kind::corner:
     case Vertex_kind::isolated: return true;
     case Vertex_kind::dart: return false;
-    case Vertex_kind::smooth: {
-      if (o.crease_rules != Loop_crease_rules::biermann_levin_zorin) return true;
-      bool ok = true;
-      t.for_each_outgoing(a, [&](Index g) {
-        const Index x = t.target(g);
-        if (d.special(x) && !blz_weight_is_standard(o, d.kind[x], d.sector[3 * (g / 3) + (g % 3 + 1) % 3])) ok = false;
-      });
-      return ok;
-    }
+    case Vertex_kind::smooth: return standard_weights_around(t, d, o, a);
   }
   return false;
 }
@@ -542,6 +423,59 @@ std::vector<FT> solve_small_system(std::vector<FT> A, std::vector<FT> b) {
   return x;
 }
 
+/// The 1-ring subdivision matrix (m = n + 1 rows, row-major) of a smooth
+/// vertex or dart a with counter-clockwise ring `ring` (half-edges a ->
+/// ring[i] in `he`), on slots 0 = a, i + 1 = ring[i]: row 0 is a's vertex
+/// rule, row i + 1 the edge rule of edge (a, ring[i]). With `first_step`
+/// the rules see the neighbours' own kinds (BLZ weights apply); otherwise the
+/// kinds they have from level 1 on (new vertices: crease vertices on crease
+/// edges, smooth elsewhere), so the matrix is the stationary S_inf.
+template <class K>
+std::vector<typename K::FT> ring_matrix(const Mesh_topology& t, const Loop_rule_data& d, const Loop_weights<K>& w,
+                                        Index a, const std::vector<Index>& ring, const std::vector<Index>& he,
+                                        bool first_step) {
+  using FT = typename K::FT;
+  const std::size_t n = ring.size(), m = n + 1;
+  std::vector<FT> S(m * m, FT(0));
+  const Vertex_rule<FT> vertex = vertex_point_rule(w, d.kind[a], Index(n));
+  S[0] = *vertex.centre;
+  for (std::size_t i = 0; i < n; ++i) S[i + 1] = FT(S[i + 1] + *vertex.neighbour);
+  for (std::size_t i = 0; i < n; ++i) {
+    FT* row = S.data() + (i + 1) * m;
+    const bool crease = d.crease[he[i]] != 0;
+    const Vertex_kind kx = first_step ? d.kind[ring[i]] : crease ? Vertex_kind::crease : Vertex_kind::smooth;
+    const auto edge = edge_point_rule(w, crease, d.kind[a], kx,
+                                      [&](int end) { return d.sector[end == 0 ? he[i] : t.opposite(he[i])]; });
+    row[0] = FT(row[0] + edge.end_a()), row[i + 1] = FT(row[i + 1] + edge.end_b());
+    if (edge.shape() == Edge_shape::crease) continue;
+    const std::size_t ip = (i + n - 1) % n, in = (i + 1) % n;
+    row[ip + 1] = FT(row[ip + 1] + edge.wing()), row[in + 1] = FT(row[in + 1] + edge.wing());
+  }
+  return S;
+}
+
+/// l <- l S for a row vector l of size m.
+template <class FT>
+void multiply_from_left(std::vector<FT>& l, const std::vector<FT>& S) {
+  const std::size_t m = l.size();
+  std::vector<FT> ls(m, FT(0));
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = 0; j < m; ++j) ls[j] = FT(ls[j] + FT(l[i] * S[i * m + j]));
+  l = std::move(ls);
+}
+
+/// The left eigenvector l of S for eigenvalue 1 with sum l = 1: (S^T - I) l
+/// = 0 with the first equation replaced by sum l = 1, solved in FT.
+template <class FT>
+std::vector<FT> left_fixed_point(const std::vector<FT>& S, std::size_t m, const FT& one) {
+  std::vector<FT> A(m * m), rhs(m, FT(0));
+  for (std::size_t j = 0; j < m; ++j)
+    for (std::size_t i = 0; i < m; ++i) A[j * m + i] = i == j ? FT(S[i * m + j] - one) : S[i * m + j];
+  for (std::size_t i = 0; i < m; ++i) A[i] = one;
+  rhs[0] = one;
+  return solve_small_system(std::move(A), std::move(rhs));
+}
+
 /// The exact limit position (dim values) of vertex a of a local patch or mesh
 /// whose fan is complete in t.
 ///
@@ -563,83 +497,29 @@ std::vector<typename K::FT> exact_limit_values(const Mesh_topology& t, const Loo
   const auto add = [&](Index v, const FT& wt) {
     for (std::size_t c = 0; c < dim; ++c) out[c] = FT(out[c] + FT(wt * values[std::size_t(v) * dim + c]));
   };
-  const Loop_options& o = w.options();
-  // Ring in counter-clockwise order, with the half-edges a -> ring[i].
+  const Vertex_kind kind = d.kind[a];
+  if (kind != Vertex_kind::smooth && kind != Vertex_kind::dart) {  // the limit stencil is exact
+    const Stencil<FT> s = limit_stencil_of(t, d, w, a);
+    for (std::size_t i = 0; i < s.vertices.size(); ++i) add(s.vertices[i], s.weights[i]);
+    return out;
+  }
+  // Ring in counter-clockwise order, with the half-edges a -> ring[i] (a is interior).
   std::vector<Index> ring, he;
-  Index last = invalid_index;
-  t.for_each_outgoing(a, [&](Index h) {
-    ring.push_back(t.target(h)), he.push_back(h);
-    last = h;
-  });
-  const bool boundary = t.is_boundary_vertex(a);
-  if (boundary) ring.push_back(t.source(Mesh_topology::prev(last))), he.push_back(Mesh_topology::prev(last));
-  const std::size_t n = ring.size();
-  const auto crease_at = [&](std::size_t i) { return d.crease[he[i]] != 0; };
-  switch (d.kind[a]) {
-    case Vertex_kind::crease:
-      add(a, w.two_thirds());
-      for (std::size_t i = 0; i < n; ++i)
-        if (crease_at(i)) add(ring[i], w.sixth());
-      return out;
-    case Vertex_kind::smooth:
-    case Vertex_kind::dart: break;
-    default: add(a, w.one()); return out;
-  }
-  // 1-ring matrices on slots 0 = a, i + 1 = ring[i] (a is interior here).
-  const std::size_t m = n + 1;
-  const auto ring_matrix = [&](bool first_step) {
-    std::vector<FT> S(m * m, FT(0));
-    S[0] = w.centre(n);
-    for (std::size_t i = 0; i < n; ++i) S[i + 1] = FT(S[i + 1] + w.beta(n));
-    for (std::size_t i = 0; i < n; ++i) {
-      FT* row = S.data() + (i + 1) * m;
-      if (crease_at(i)) {
-        row[0] = FT(row[0] + w.half()), row[i + 1] = FT(row[i + 1] + w.half());
-        continue;
-      }
-      FT wa = w.three_eighths(), wb = w.three_eighths();
-      const Index x = ring[i];
-      if (first_step && o.crease_rules == Loop_crease_rules::biermann_levin_zorin && d.special(x)) {
-        const FT g = w.gamma(d.sector[t.opposite(he[i])], d.kind[x] == Vertex_kind::corner);
-        wb = FT(w.three_quarters() - g), wa = g;
-      }
-      row[0] = FT(row[0] + wa), row[i + 1] = FT(row[i + 1] + wb);
-      const std::size_t ip = (i + n - 1) % n, in = (i + 1) % n;
-      row[ip + 1] = FT(row[ip + 1] + w.eighth()), row[in + 1] = FT(row[in + 1] + w.eighth());
-    }
-    return S;
-  };
+  t.for_each_outgoing(a, [&](Index h) { ring.push_back(t.target(h)), he.push_back(h); });
+  const std::size_t n = ring.size(), m = n + 1;
   std::vector<FT> l(m);
-  if (d.kind[a] == Vertex_kind::smooth) {
-    l[0] = w.limit_centre(n);
-    for (std::size_t i = 0; i < n; ++i) l[i + 1] = w.chi(n);
-  } else {  // dart: (S_inf^T - I) l = 0 with the first equation replaced by sum l = 1
-    const std::vector<FT> S = ring_matrix(false);
-    std::vector<FT> A(m * m), rhs(m, FT(0));
-    for (std::size_t j = 0; j < m; ++j)
-      for (std::size_t i = 0; i < m; ++i) A[j * m + i] = i == j ? FT(S[i * m + j] - w.one()) : S[i * m + j];
-    for (std::size_t i = 0; i < m; ++i) A[i] = w.one();
-    rhs[0] = w.one();
-    l = solve_small_system(std::move(A), std::move(rhs));
+  if (kind == Vertex_kind::smooth) {
+    const Vertex_rule<FT> limit = limit_point_rule(w, kind, Index(n));
+    l[0] = *limit.centre;
+    for (std::size_t i = 0; i < n; ++i) l[i + 1] = *limit.neighbour;
+  } else {
+    l = left_fixed_point(ring_matrix(t, d, w, a, ring, he, false), m, w.one());
   }
-  if (!limit_mask_is_exact(t, d, o, a) && d.kind[a] == Vertex_kind::smooth) {
-    // BLZ first step: l <- l S_0
-    const std::vector<FT> S0 = ring_matrix(true);
-    std::vector<FT> ls(m, FT(0));
-    for (std::size_t i = 0; i < m; ++i)
-      for (std::size_t j = 0; j < m; ++j) ls[j] = FT(ls[j] + FT(l[i] * S0[i * m + j]));
-    l = std::move(ls);
-  } else if (d.kind[a] == Vertex_kind::dart && o.crease_rules == Loop_crease_rules::biermann_levin_zorin) {
-    bool modified = false;
-    for (std::size_t i = 0; i < n; ++i) modified |= !crease_at(i) && d.special(ring[i]);
-    if (modified) {
-      const std::vector<FT> S0 = ring_matrix(true);
-      std::vector<FT> ls(m, FT(0));
-      for (std::size_t i = 0; i < m; ++i)
-        for (std::size_t j = 0; j < m; ++j) ls[j] = FT(ls[j] + FT(l[i] * S0[i * m + j]));
-      l = std::move(ls);
-    }
-  }
+  bool first_step_differs = kind == Vertex_kind::smooth && !limit_mask_is_exact(t, d, w.options(), a);
+  if (kind == Vertex_kind::dart)
+    for (std::size_t i = 0; i < n; ++i)
+      first_step_differs |= edge_rule_is_modified(w.options(), d.crease[he[i]] != 0, kind, d.kind[ring[i]]);
+  if (first_step_differs) multiply_from_left(l, ring_matrix(t, d, w, a, ring, he, true));
   add(a, l[0]);
   for (std::size_t i = 0; i < n; ++i) add(ring[i], l[i + 1]);
   return out;
@@ -867,7 +747,7 @@ class Loop_limit_surface {
   // topology, the classification and the extraction.
   Loop_limit_jet<FT> irregular(Index f, double u0, double v0, bool derivatives) const {
     using Patch = internal::Loop_local_patch<FT>;
-    using Stencils = std::vector<std::vector<internal::Weighted<FT>>>;
+    using Stencils = std::vector<Stencil<FT>>;
     Patch P = internal::extract_local_patch<FT>(topology_, rules_, f, 3, [&](Index v, FT* out) {
       out[0] = points_[v].x, out[1] = points_[v].y, out[2] = points_[v].z;
     });
@@ -959,9 +839,12 @@ class Loop_limit_surface {
         Q.faces = memo.child_faces;
         Q.rules = memo.child_rules;
         Q.values.assign(memo.stencils.size() * 3, FT(0));
-        for (std::size_t i = 0; i < memo.stencils.size(); ++i)
-          for (const auto& [x, wt] : memo.stencils[i])
-            for (int k = 0; k < 3; ++k) Q.values[i * 3 + k] = FT(Q.values[i * 3 + k] + FT(wt * P.values[std::size_t(x) * 3 + k]));
+        for (std::size_t i = 0; i < memo.stencils.size(); ++i) {
+          const Stencil<FT>& st = memo.stencils[i];
+          for (std::size_t j = 0; j < st.vertices.size(); ++j)
+            for (int k = 0; k < 3; ++k)
+              Q.values[i * 3 + k] = FT(Q.values[i * 3 + k] + FT(st.weights[j] * P.values[std::size_t(st.vertices[j]) * 3 + k]));
+        }
         P = std::move(Q);
         continue;
       }

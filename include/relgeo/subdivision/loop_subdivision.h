@@ -318,8 +318,9 @@ void Loop_subdivider<K>::edge_points(const Level& lv, const Acc* p, std::vector<
   const Index nv = static_cast<Index>(t.number_of_vertices()), ne = static_cast<Index>(t.number_of_edges());
   for (Index e = 0; e < ne; ++e) {
     const Index h = t.edge_halfedge(e), a = t.source(h), b = t.target(h);
-    const auto rule = internal::edge_point_rule(weights_, f.edge_is_crease[e] != 0, f.vertex_kind[a], f.vertex_kind[b],
-                                                [&](int end) { return sector_faces_[end == 0 ? h : t.opposite(h)]; });
+    const auto rule = internal::edge_point_rule(
+        weights_, f.edge_is_crease[e] != 0, [&](int end) { return f.vertex_kind[end == 0 ? a : b]; },
+        [&](int end) { return sector_faces_[end == 0 ? h : t.opposite(h)]; });
     Acc& r = q[nv + e];
     if (rule.shape() == internal::Edge_shape::crease) {
       r = internal::point_combination(rule.end_a(), p[a], rule.end_b(), p[b]);
@@ -411,8 +412,10 @@ template <class K>
 void Loop_subdivider<K>::limit_of_old_vertices(const Level& lv, const Acc* p, std::vector<Acc>& q) {
   const Index nv = static_cast<Index>(lv.topology.number_of_vertices());
   const auto no_sector = [](int) -> Index { return 0; };
-  const auto standard = internal::edge_point_rule(weights_, false, Vertex_kind::smooth, Vertex_kind::smooth, no_sector);
-  const auto crease_edge = internal::edge_point_rule(weights_, true, Vertex_kind::crease, Vertex_kind::crease, no_sector);
+  const auto smooth_ends = [](int) { return Vertex_kind::smooth; };
+  const auto crease_ends = [](int) { return Vertex_kind::crease; };
+  const auto standard = internal::edge_point_rule(weights_, false, smooth_ends, no_sector);
+  const auto crease_edge = internal::edge_point_rule(weights_, true, crease_ends, no_sector);
   const FT& end = standard.end_a();
   const FT refined_ring_weight = FT(standard.end_b() + FT(standard.wing() + standard.wing()));
   const internal::Vertex_rule<FT> crease = internal::limit_point_rule(weights_, Vertex_kind::crease, 0);

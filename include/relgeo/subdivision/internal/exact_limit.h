@@ -52,8 +52,9 @@ std::vector<typename K::FT> ring_matrix(const Mesh_topology& t, const Loop_rule_
     FT* row = S.data() + (i + 1) * m;
     const bool crease = d.crease[he[i]] != 0;
     const Vertex_kind kx = first_step ? d.kind[ring[i]] : crease ? Vertex_kind::crease : Vertex_kind::smooth;
-    const auto edge = edge_point_rule(w, crease, d.kind[a], kx,
-                                      [&](int end) { return d.sector[end == 0 ? he[i] : t.opposite(he[i])]; });
+    const auto edge = edge_point_rule(
+        w, crease, [&](int end) { return end == 0 ? d.kind[a] : kx; },
+        [&](int end) { return d.sector[end == 0 ? he[i] : t.opposite(he[i])]; });
     row[0] = FT(row[0] + edge.end_a()), row[i + 1] = FT(row[i + 1] + edge.end_b());
     if (edge.shape() == Edge_shape::crease) continue;
     const std::size_t ip = (i + n - 1) % n, in = (i + 1) % n;

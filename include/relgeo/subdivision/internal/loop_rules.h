@@ -92,40 +92,47 @@ inline bool blz_weight_is_standard(const Loop_options& o, Vertex_kind kind, Inde
 }
 
 /// The weights of an edge rule. Crease and standard weights point into the
-/// weight table; the modified ones are computed (gamma) and held here.
+/// weight table; the modified ones are computed (gamma) and held here, so an
+/// Edge_rule is neither copied nor moved (edge_point_rule returns it as a
+/// prvalue: guaranteed copy elision).
 template <class FT>
 class Edge_rule {
  public:
-  Edge_rule(Edge_shape shape, const FT& ends, const FT* wing) : shape_(shape), ends_(&ends), wing_(wing) {}
+  Edge_rule(Edge_shape shape, const FT& ends, const FT* wing) : shape_(shape), a_(&ends), b_(&ends), wing_(wing) {}
   Edge_rule(const FT& at_a, const FT& at_b, const FT& wing)
-      : shape_(Edge_shape::modified), ends_(nullptr), wing_(&wing), modified_(std::array<FT, 2>{at_a, at_b}) {}
+      : shape_(Edge_shape::modified), own_(std::array<FT, 2>{at_a, at_b}), a_(&(*own_)[0]), b_(&(*own_)[1]), wing_(&wing) {}
+  Edge_rule(const Edge_rule&) = delete;
+  Edge_rule& operator=(const Edge_rule&) = delete;
 
   Edge_shape shape() const { return shape_; }
-  const FT& end_a() const { return modified_ ? (*modified_)[0] : *ends_; }
-  const FT& end_b() const { return modified_ ? (*modified_)[1] : *ends_; }
+  const FT& end_a() const { return *a_; }
+  const FT& end_b() const { return *b_; }
   /// The weight of each opposite vertex. \pre shape() != crease.
   const FT& wing() const { return *wing_; }
 
  private:
   Edge_shape shape_;
-  const FT* ends_;
+  std::optional<std::array<FT, 2>> own_;  // BLZ's modified end weights (nothing built otherwise)
+  const FT* a_;
+  const FT* b_;
   const FT* wing_;
-  std::optional<std::array<FT, 2>> modified_;
 };
 
 /// Loop's edge-point rule of edge (a, b) (Hoppe et al. 1994; BLZ 2000 when
-/// the options say so). `sector_faces(end)` gives the number of faces of the
-/// sector holding the edge at end 0 (a) or 1 (b); it is asked only for the
-/// special end of a modified edge.
-template <class K, class Sector_faces>
-Edge_rule<typename K::FT> edge_point_rule(const Loop_weights<K>& w, bool crease, Vertex_kind a, Vertex_kind b,
+/// the options say so). `kind_at(end)` gives the kind of end 0 (a) or 1 (b)
+/// and `sector_faces(end)` the number of faces of the sector holding the
+/// edge there; they are asked only under BLZ's rules (the sector only for
+/// the special end of a modified edge), so the fast path reads neither.
+template <class K, class Kind_at, class Sector_faces>
+Edge_rule<typename K::FT> edge_point_rule(const Loop_weights<K>& w, bool crease, Kind_at&& kind_at,
                                           Sector_faces&& sector_faces) {
   using FT = typename K::FT;
   if (crease) return Edge_rule<FT>(Edge_shape::crease, w.half(), nullptr);
+  const Vertex_kind a = w.options().crease_rules == Loop_crease_rules::biermann_levin_zorin ? kind_at(0) : Vertex_kind::smooth;
+  const Vertex_kind b = w.options().crease_rules == Loop_crease_rules::biermann_levin_zorin ? kind_at(1) : Vertex_kind::smooth;
   if (!edge_rule_is_modified(w.options(), crease, a, b)) return Edge_rule<FT>(Edge_shape::standard, w.three_eighths(), &w.eighth());
   const int special = is_special(a) ? 0 : 1;
-  const Vertex_kind kind = special == 0 ? a : b;
-  const FT g = w.gamma(sector_faces(special), kind == Vertex_kind::corner);
+  const FT g = w.gamma(sector_faces(special), (special == 0 ? a : b) == Vertex_kind::corner);
   const FT at_special = FT(w.three_quarters() - g);
   return special == 0 ? Edge_rule<FT>(at_special, g, w.eighth()) : Edge_rule<FT>(g, at_special, w.eighth());
 }
@@ -252,8 +259,9 @@ Stencil<typename K::FT> edge_point_stencil_of(const Mesh_topology& t, const Rule
   const Index a = t.source(h), b = t.target(h), o = t.opposite(h);
   const bool crease = r.is_crease(h);
   if (!crease && o == invalid_index) throw Error(Error_code::computation_failure, "Loop local patch: missing face");
-  const auto rule = edge_point_rule(w, crease, r.vertex_kind(a), r.vertex_kind(b),
-                                    [&](int end) { return r.sector_faces(end == 0 ? h : o); });
+  const auto rule = edge_point_rule(
+      w, crease, [&](int end) { return r.vertex_kind(end == 0 ? a : b); },
+      [&](int end) { return r.sector_faces(end == 0 ? h : o); });
   s.add(a, rule.end_a()), s.add(b, rule.end_b());
   if (rule.shape() == Edge_shape::crease) return s;
   s.add(t.target(Mesh_topology::next(h)), rule.wing());

@@ -287,7 +287,7 @@ class Loop_limit_surface {
     int child = -1;
     std::vector<Triangle> child_faces;
     internal::Loop_rule_data child_rules;
-    std::vector<Stencil<FT>> stencils;
+    internal::Stencil_list<FT> stencils;
   };
   // A descent of local subdivision towards a point: the current local patch,
   // the point's exact parameters in it, J = d(s, t) / d(u0, v0) and the memo.
@@ -381,19 +381,18 @@ class Loop_limit_surface {
     Q.dim = 3;
     Q.faces = memo.child_faces;
     Q.rules = memo.child_rules;
-    Q.values.assign(memo.stencils.size() * 3, FT(0));
-    for (std::size_t i = 0; i < memo.stencils.size(); ++i) {
-      const Stencil<FT>& st = memo.stencils[i];
-      for (std::size_t j = 0; j < st.vertices.size(); ++j)
+    const internal::Stencil_list<FT>& st = memo.stencils;
+    Q.values.assign(st.size() * 3, FT(0));
+    for (std::size_t i = 0; i < st.size(); ++i)
+      for (std::size_t j = st.begin[i]; j < st.begin[i + 1]; ++j)
         for (int k = 0; k < 3; ++k)
           Q.values[i * 3 + k] = FT(Q.values[i * 3 + k] + FT(st.weights[j] * P.values[std::size_t(st.vertices[j]) * 3 + k]));
-    }
     return Q;
   }
 
   // One local refinement step to child c, remembered for the next level.
   void refine_and_remember(Descent& d, const Mesh_topology& t, const std::array<bool, 3>& corner_regular, int c) const {
-    std::vector<Stencil<FT>> st;
+    internal::Stencil_list<FT> st;
     auto children = internal::refine_local_patch<K>(d.patch, t, weights_, 1u << c, &st);
     Step_memo& memo = d.memo;
     memo.faces = d.patch.faces, memo.rules = d.patch.rules, memo.child = c, memo.corner_regular = corner_regular;

@@ -29,7 +29,9 @@ template <class K>
 Stencil<typename K::FT> vertex_point_stencil(const Mesh_topology& t, const Loop_features& f,
                                              Loop_weights<K>& w, Index v) {
   w.reserve(t.valence(v));
-  return internal::vertex_point_stencil_of(t, internal::Mesh_rule_source{t, f}, w, v);
+  Stencil<typename K::FT> s;
+  internal::vertex_point_stencil_into(t, internal::Mesh_rule_source{t, f}, w, v, s);
+  return s;
 }
 
 /// The refinement stencil of the new vertex on edge e: its ends, then (not
@@ -37,7 +39,9 @@ Stencil<typename K::FT> vertex_point_stencil(const Mesh_topology& t, const Loop_
 template <class K>
 Stencil<typename K::FT> edge_point_stencil(const Mesh_topology& t, const Loop_features& f,
                                            Loop_weights<K>& w, Index e) {
-  return internal::edge_point_stencil_of(t, internal::Mesh_rule_source{t, f}, w, t.edge_halfedge(e));
+  Stencil<typename K::FT> s;
+  internal::edge_point_stencil_into(t, internal::Mesh_rule_source{t, f}, w, t.edge_halfedge(e), s);
+  return s;
 }
 
 /// The limit-position stencil of vertex v (thesis Fig. 2.6): smooth/dart
@@ -47,7 +51,9 @@ template <class K>
 Stencil<typename K::FT> limit_stencil(const Mesh_topology& t, const Loop_features& f,
                                       Loop_weights<K>& w, Index v) {
   w.reserve(t.valence(v));
-  return internal::limit_stencil_of(t, internal::Mesh_rule_source{t, f}, w, v);
+  Stencil<typename K::FT> s;
+  internal::limit_stencil_into(t, internal::Mesh_rule_source{t, f}, w, v, s);
+  return s;
 }
 
 /// Two limit tangent masks at vertex v (weights sum to 0), for the surface

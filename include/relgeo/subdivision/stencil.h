@@ -21,6 +21,10 @@ struct Stencil {
     vertices.push_back(v);
     weights.push_back(std::move(w));
   }
+  void clear() {
+    vertices.clear();
+    weights.clear();
+  }
 };
 
 /// sum w_i p_i, coordinate-wise in FT, as relgeo::Point_3<FT> (for a vector

@@ -44,14 +44,6 @@ bool possibly_le(const FT& a, const FT& b, double tol) {
   else return !(b < a);
 }
 
-/// [lo, hi] <- its hull with x (the first value when !have).
-template <class FT>
-void include_in_range(const FT& x, FT& lo, FT& hi, std::vector<bool>::reference have) {
-  lo = have ? min_of(lo, x) : x;
-  hi = have ? max_of(hi, x) : x;
-  have = true;
-}
-
 /// Adds the ranges over the Bezier nets of a regular patch (12 x dim values,
 /// row-major) refined `depth` times to lo/hi (per dim).
 template <class FT>
@@ -60,7 +52,12 @@ void regular_net_ranges(const std::vector<FT>& net, std::size_t dim, unsigned de
   if (depth == 0) {
     for (std::size_t d = 0; d < dim; ++d) {
       const std::array<FT, 15> b = loop_patch_bezier_times_24(net.data() + d, dim);
-      for (const FT& x24 : b) include_in_range(FT(x24 * one_24), lo[d], hi[d], have[d]);
+      for (const FT& x24 : b) {
+        const FT x = FT(x24 * one_24);
+        lo[d] = have[d] ? min_of(lo[d], x) : x;
+        hi[d] = have[d] ? max_of(hi[d], x) : x;
+        have[d] = true;
+      }
     }
     return;
   }
@@ -123,7 +120,12 @@ void local_patch_ranges(const Loop_local_patch<typename K::FT>& P, const Loop_we
   }
   if (irregular_depth == 0) {
     for (Index v : influence_vertices(t, P.rules, 0))
-      for (std::size_t d = 0; d < dim; ++d) include_in_range(P.value(v)[d], lo[d], hi[d], have[d]);
+      for (std::size_t d = 0; d < dim; ++d) {
+        const FT& x = P.value(v)[d];
+        lo[d] = have[d] ? min_of(lo[d], x) : x;
+        hi[d] = have[d] ? max_of(hi[d], x) : x;
+        have[d] = true;
+      }
     return;
   }
   const auto children = refine_local_patch<K>(P, t, w, 0xFu);

@@ -108,7 +108,8 @@ std::vector<typename K::FT> exact_limit_values(const Mesh_topology& t, const Loo
   };
   const Vertex_kind kind = d.kind[a];
   if (kind != Vertex_kind::smooth && kind != Vertex_kind::dart) {  // the limit stencil is exact
-    const Stencil<FT> s = limit_stencil_of(t, d, w, a);
+    Stencil<FT> s;
+    limit_stencil_into(t, d, w, a, s);
     for (std::size_t i = 0; i < s.vertices.size(); ++i) add(s.vertices[i], s.weights[i]);
     return out;
   }

@@ -81,6 +81,29 @@ Mesh_topology local_topology(const Loop_local_patch<FT>& P) {
   return Mesh_topology::build_checked(P.number_of_vertices(), P.faces, ignored);
 }
 
+/// Stencils stored back to back (one allocation per array for all of them,
+/// not per stencil): stencil i weighs vertices[begin[i] .. begin[i + 1]).
+template <class FT>
+struct Stencil_list {
+  std::vector<std::size_t> begin{0};
+  std::vector<Index> vertices;
+  std::vector<FT> weights;
+  std::size_t size() const { return begin.size() - 1; }
+  void clear() {
+    begin.assign(1, 0);
+    vertices.clear();
+    weights.clear();
+  }
+  /// Appends the stencil of entries [from, to) of the given arrays.
+  void append(const std::vector<Index>& v, const std::vector<FT>& w, std::size_t from, std::size_t to) {
+    vertices.insert(vertices.end(), v.begin() + from, v.begin() + to);
+    weights.insert(weights.end(), w.begin() + from, w.begin() + to);
+    begin.push_back(vertices.size());
+  }
+  /// Appends stencil i of another list.
+  void append(const Stencil_list& o, std::size_t i) { append(o.vertices, o.weights, o.begin[i], o.begin[i + 1]); }
+};
+
 /// One refinement step of a local patch: the children `which` (a bitmask of
 /// 1 << c, c as in box_spline.h) of faces[0] as local patches. Only the
 /// vertex points of faces[0]'s vertices and the edge points of their edges
@@ -88,16 +111,18 @@ Mesh_topology local_topology(const Loop_local_patch<FT>& P) {
 template <class K>
 std::array<Loop_local_patch<typename K::FT>, 4> refine_local_patch(
     const Loop_local_patch<typename K::FT>& P, const Mesh_topology& t, const Loop_weights<K>& w, unsigned which,
-    std::vector<Stencil<typename K::FT>>* stencils = nullptr) {
+    Stencil_list<typename K::FT>* stencils = nullptr) {
   using FT = typename K::FT;
   const Index nv = P.number_of_vertices(), ne = static_cast<Index>(t.number_of_edges());
   const Index nf = static_cast<Index>(P.faces.size());
   const std::size_t dim = P.dim;
   std::vector<FT> cv((std::size_t(nv) + ne) * dim);
   std::vector<std::uint8_t> done(std::size_t(nv) + ne, 0);
-  std::vector<Stencil<FT>> used;  // per child vertex, when `stencils` is wanted
-  if (stencils) used.resize(std::size_t(nv) + ne);
-  const auto apply = [&](Index target, Stencil<FT>&& st) {
+  Stencil_list<FT> used;  // every stencil applied, when `stencils` is wanted
+  std::vector<std::size_t> used_index;  // per child vertex: its stencil in `used`
+  if (stencils) used_index.assign(std::size_t(nv) + ne, 0);
+  Stencil<FT> st;  // one buffer for every stencil of the step
+  const auto apply = [&](Index target) {
     FT* out = cv.data() + std::size_t(target) * dim;
     for (std::size_t c = 0; c < dim; ++c) out[c] = FT(0);
     for (std::size_t i = 0; i < st.vertices.size(); ++i) {
@@ -105,15 +130,20 @@ std::array<Loop_local_patch<typename K::FT>, 4> refine_local_patch(
       for (std::size_t c = 0; c < dim; ++c) out[c] = FT(out[c] + FT(st.weights[i] * in[c]));
     }
     done[target] = 1;
-    if (stencils) used[target] = std::move(st);
+    if (stencils) used_index[target] = used.size(), used.append(st.vertices, st.weights, 0, st.vertices.size());
   };
   const auto do_edge = [&](Index h) {
     const Index e = t.edge(h);
-    if (!done[nv + e]) apply(nv + e, edge_point_stencil_of(t, P.rules, w, h));
+    if (done[nv + e]) return;
+    edge_point_stencil_into(t, P.rules, w, h, st);
+    apply(nv + e);
   };
   for (int k = 0; k < 3; ++k) {
     const Index a = P.faces[0][k];
-    if (!done[a]) apply(a, vertex_point_stencil_of(t, P.rules, w, a));
+    if (!done[a]) {
+      vertex_point_stencil_into(t, P.rules, w, a, st);
+      apply(a);
+    }
     Index last = invalid_index;
     t.for_each_outgoing(a, [&](Index h) {
       do_edge(h);
@@ -186,7 +216,7 @@ std::array<Loop_local_patch<typename K::FT>, 4> refine_local_patch(
     }
     if (stencils) {  // the stencils of the (single) requested child's vertices
       stencils->clear();
-      for (Index v : ids) stencils->push_back(used[v]);
+      for (Index v : ids) stencils->append(used, used_index[v]);
     }
   }
   return out;

@@ -231,31 +231,32 @@ void add_vertex_rule(const Mesh_topology& t, const Rules& r, const Vertex_rule<F
   }
 }
 
-/// The refinement stencil of vertex a. \pre w holds a's valence.
+/// The refinement stencil of vertex a, into s (cleared first: callers reuse
+/// one buffer). \pre w holds a's valence.
 template <class K, class Rules>
-Stencil<typename K::FT> vertex_point_stencil_of(const Mesh_topology& t, const Rules& r, const Loop_weights<K>& w,
-                                                Index a) {
-  Stencil<typename K::FT> s;
+void vertex_point_stencil_into(const Mesh_topology& t, const Rules& r, const Loop_weights<K>& w, Index a,
+                               Stencil<typename K::FT>& s) {
+  s.clear();
   add_vertex_rule(t, r, vertex_point_rule(w, r.vertex_kind(a), t.number_of_incident_faces(a)), a, s);
-  return s;
 }
 
-/// The limit-position stencil of vertex a. \pre w holds a's valence.
+/// The limit-position stencil of vertex a, into s (cleared first). \pre w
+/// holds a's valence.
 template <class K, class Rules>
-Stencil<typename K::FT> limit_stencil_of(const Mesh_topology& t, const Rules& r, const Loop_weights<K>& w, Index a) {
-  Stencil<typename K::FT> s;
+void limit_stencil_into(const Mesh_topology& t, const Rules& r, const Loop_weights<K>& w, Index a,
+                        Stencil<typename K::FT>& s) {
+  s.clear();
   add_vertex_rule(t, r, limit_point_rule(w, r.vertex_kind(a), t.number_of_incident_faces(a)), a, s);
-  return s;
 }
 
-/// The refinement stencil of the edge of half-edge h: a = source, b =
-/// target, then the wings (opposite vertices of h's face and of the other
-/// face). \throws Error (computation_failure) when a smooth edge lacks its
-/// second face (a local patch cut too small).
+/// The refinement stencil of the edge of half-edge h, into s (cleared
+/// first): a = source, b = target, then the wings (opposite vertices of h's
+/// face and of the other face). \throws Error (computation_failure) when a
+/// smooth edge lacks its second face (a local patch cut too small).
 template <class K, class Rules>
-Stencil<typename K::FT> edge_point_stencil_of(const Mesh_topology& t, const Rules& r, const Loop_weights<K>& w,
-                                              Index h) {
-  Stencil<typename K::FT> s;
+void edge_point_stencil_into(const Mesh_topology& t, const Rules& r, const Loop_weights<K>& w, Index h,
+                             Stencil<typename K::FT>& s) {
+  s.clear();
   const Index a = t.source(h), b = t.target(h), o = t.opposite(h);
   const bool crease = r.is_crease(h);
   if (!crease && o == invalid_index) throw Error(Error_code::computation_failure, "Loop local patch: missing face");
@@ -263,10 +264,9 @@ Stencil<typename K::FT> edge_point_stencil_of(const Mesh_topology& t, const Rule
       w, crease, [&](int end) { return r.vertex_kind(end == 0 ? a : b); },
       [&](int end) { return r.sector_faces(end == 0 ? h : o); });
   s.add(a, rule.end_a()), s.add(b, rule.end_b());
-  if (rule.shape() == Edge_shape::crease) return s;
+  if (rule.shape() == Edge_shape::crease) return;
   s.add(t.target(Mesh_topology::next(h)), rule.wing());
   s.add(t.target(Mesh_topology::next(o)), rule.wing());
-  return s;
 }
 
 }  // namespace relgeo::internal

@@ -35,18 +35,28 @@ inline bool in_parameter_triangle(double u, double v) {
 
 /// The child (box_spline.h numbering) of a face holding the point (u, v),
 /// and (u, v) replaced by the point's parameters in that child:
-/// c = 0 when w >= 1/2, 1 when u >= 1/2, 2 when v >= 1/2, else 3.
+/// c = 0 when w >= 1/2: (2u, 2v); 1 when u >= 1/2: (2v, 2w); 2 when
+/// v >= 1/2: (2w, 2u); else 3: (1 - 2w, 1 - 2u). In place, without
+/// temporaries (this runs at every level of a descent).
 inline int descend_to_child(mpq_class& u, mpq_class& v) {
-  const mpq_class half(1, 2), one(1);
-  const mpq_class w = one - u - v;
-  int c;
-  mpq_class nu, nv;
-  if (w >= half) c = 0, nu = 2 * u, nv = 2 * v;
-  else if (u >= half) c = 1, nu = 2 * v, nv = 2 * w;
-  else if (v >= half) c = 2, nu = 2 * w, nv = 2 * u;
-  else c = 3, nu = one - 2 * w, nv = one - 2 * u;
-  u = std::move(nu), v = std::move(nv);
-  return c;
+  const mpq_class w = 1 - u - v;
+  const auto half_or_more = [](const mpq_class& x) { return mpq_cmp_ui(x.get_mpq_t(), 1, 2) >= 0; };
+  const auto twice = [](mpq_class& out, const mpq_class& x) { mpq_mul_2exp(out.get_mpq_t(), x.get_mpq_t(), 1); };
+  if (half_or_more(w)) {
+    twice(u, u), twice(v, v);
+    return 0;
+  }
+  if (half_or_more(u)) {
+    twice(u, v), twice(v, w);
+    return 1;
+  }
+  if (half_or_more(v)) {
+    twice(v, u), twice(u, w);
+    return 2;
+  }
+  twice(v, u), v = 1 - v;
+  twice(u, w), u = 1 - u;
+  return 3;
 }
 
 /// J <- d(child parameters) / d(parent parameters) J for child c

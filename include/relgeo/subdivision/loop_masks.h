@@ -22,16 +22,26 @@
 
 namespace relgeo {
 
+namespace internal {
+/// The stencil of a vertex rule (vertex_point_rule or limit_point_rule) at
+/// vertex v of a whole mesh, reserving v's valence first.
+template <class K, class Rule_of>
+Stencil<typename K::FT> mesh_vertex_stencil(const Mesh_topology& t, const Loop_features& f, Loop_weights<K>& w,
+                                            Index v, Rule_of&& rule_of) {
+  w.reserve(t.valence(v));
+  Stencil<typename K::FT> s;
+  add_vertex_rule(t, Mesh_rule_source{t, f}, rule_of(w, f.vertex_kind[v], t.number_of_incident_faces(v)), v, s);
+  return s;
+}
+}  // namespace internal
+
 /// The refinement stencil of (old) vertex v: smooth and dart (1 - n beta) v
 /// + beta sum p_i over the ring; crease (3/4, 1/8, 1/8) with its crease
 /// neighbours; corner and isolated vertices fixed.
 template <class K>
 Stencil<typename K::FT> vertex_point_stencil(const Mesh_topology& t, const Loop_features& f,
                                              Loop_weights<K>& w, Index v) {
-  w.reserve(t.valence(v));
-  Stencil<typename K::FT> s;
-  internal::vertex_point_stencil_into(t, internal::Mesh_rule_source{t, f}, w, v, s);
-  return s;
+  return internal::mesh_vertex_stencil(t, f, w, v, internal::vertex_point_rule<K>);
 }
 
 /// The refinement stencil of the new vertex on edge e: its ends, then (not
@@ -50,10 +60,7 @@ Stencil<typename K::FT> edge_point_stencil(const Mesh_topology& t, const Loop_fe
 template <class K>
 Stencil<typename K::FT> limit_stencil(const Mesh_topology& t, const Loop_features& f,
                                       Loop_weights<K>& w, Index v) {
-  w.reserve(t.valence(v));
-  Stencil<typename K::FT> s;
-  internal::limit_stencil_into(t, internal::Mesh_rule_source{t, f}, w, v, s);
-  return s;
+  return internal::mesh_vertex_stencil(t, f, w, v, internal::limit_point_rule<K>);
 }
 
 /// Two limit tangent masks at vertex v (weights sum to 0), for the surface

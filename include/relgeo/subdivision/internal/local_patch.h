@@ -89,6 +89,10 @@ struct Stencil_list {
   std::vector<Index> vertices;
   std::vector<FT> weights;
   std::size_t size() const { return begin.size() - 1; }
+  /// Room for n stencils of about `entries` entries each.
+  void reserve(std::size_t n, std::size_t entries) {
+    begin.reserve(n + 1), vertices.reserve(n * entries), weights.reserve(n * entries);
+  }
   void clear() {
     begin.assign(1, 0);
     vertices.clear();
@@ -120,8 +124,12 @@ std::array<Loop_local_patch<typename K::FT>, 4> refine_local_patch(
   std::vector<std::uint8_t> done(std::size_t(nv) + ne, 0);
   Stencil_list<FT> used;  // every stencil applied, when `stencils` is wanted
   std::vector<std::size_t> used_index;  // per child vertex: its stencil in `used`
-  if (stencils) used_index.assign(std::size_t(nv) + ne, 0);
+  if (stencils) {
+    used_index.assign(std::size_t(nv) + ne, 0);
+    used.reserve(std::size_t(nv) + ne, 8);
+  }
   Stencil<FT> st;  // one buffer for every stencil of the step
+  st.vertices.reserve(16), st.weights.reserve(16);
   const auto apply = [&](Index target) {
     FT* out = cv.data() + std::size_t(target) * dim;
     for (std::size_t c = 0; c < dim; ++c) out[c] = FT(0);
@@ -216,6 +224,7 @@ std::array<Loop_local_patch<typename K::FT>, 4> refine_local_patch(
     }
     if (stencils) {  // the stencils of the (single) requested child's vertices
       stencils->clear();
+      stencils->reserve(ids.size(), 8);
       for (Index v : ids) stencils->append(used, used_index[v]);
     }
   }

@@ -74,7 +74,7 @@ const std::vector<Boolean_case>& boolean_cases() {
       {"spheres-20K", [] { return std::pair{icosphere(5), icosphere(5, {0.5, 0.3, 0.2}, 0.9)}; }, false},
       {"elephant-rotated", [] {
          const Mesh e = data_mesh("elephant.off");
-         return std::pair{e, moved(e, 0.5, 0.3, {0.02, 0.01, 0.005})};
+         return std::pair{e, rigidly_moved(e, 0.5, 0.3, {0.02, 0.01, 0.005})};
        }, false},
       {"armadillo-sphere", [] {
          const Mesh a = data_mesh("armadillo.off");

@@ -108,7 +108,7 @@ TEST(BooleanCgalOracle, CgalDataSetAgainstMovedCopies) {
       for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], c[i]), hi[i] = std::max(hi[i], c[i]);
     }
     const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-    const Mesh copy = moved(m, 0.5, 0.3, {0.1 * size, 0.05 * size, 0.02 * size});
+    const Mesh copy = rigidly_moved(m, 0.5, 0.3, {0.1 * size, 0.05 * size, 0.02 * size});
     try {
       (void)boolean(m, copy, Op::union_of);  // refuses self-intersecting models of the set
     } catch (const Invalid_operand& e) {
@@ -130,7 +130,7 @@ TEST(BooleanCgalOracle, RandomRigidMotions) {
   const auto motions = static_cast<int>(1000 * test_scale()) + 10;
   for (int i = 0; i < motions; ++i) {
     const Mesh& a = shapes[i % shapes.size()];
-    const Mesh b = moved(shapes[(i / 3) % shapes.size()], angle(rng), angle(rng), {shift(rng), shift(rng), shift(rng)});
+    const Mesh b = rigidly_moved(shapes[(i / 3) % shapes.size()], angle(rng), angle(rng), {shift(rng), shift(rng), shift(rng)});
     expect_matches_cgal(a, b, "motion " + std::to_string(i), false);
     if (HasFailure()) break;
   }

@@ -98,7 +98,7 @@ TYPED_TEST(MeshBoolean, SpheresAndTorusInGeneralPosition) {
   const std::vector<std::pair<std::string, std::pair<Mesh, Mesh>>> cases{
       {"spheres", {icosphere(3), icosphere(3, {0.6, 0.3, 0.2}, 0.9)}},
       {"torus-sphere", {torus(1, 0.4, 32, 16), icosphere(3, {1, 0, 0.1}, 0.5)}},
-      {"sphere-through-torus", {torus(1, 0.3, 24, 12), moved(icosphere(2), 0.3, 0.2, {0, 0, 0.05})}},
+      {"sphere-through-torus", {torus(1, 0.3, 24, 12), rigidly_moved(icosphere(2), 0.3, 0.2, {0, 0, 0.05})}},
   };
   for (const auto& [name, ab] : cases) {
     const auto& [a, b] = ab;

@@ -116,4 +116,7 @@ struct Triangle_mesh {
   friend bool operator==(const Triangle_mesh&, const Triangle_mesh&) = default;
 };
 
+/// The mesh of files and of most examples: double coordinates.
+using Mesh_double = Triangle_mesh<Point_3<double>>;
+
 }  // namespace relgeo

@@ -117,6 +117,10 @@ Section_report extrusion_section(const Experiment_context& ctx);  // experiment/
 /// meshes to the exact limit surface per level and kernel, error bounds.
 Section_report subdivision_section(const Experiment_context& ctx);  // experiment/subdivision.cpp
 
+/// Mesh Booleans (thesis Ch. 5): everyday cases under every kernel, validated
+/// and compared with CGAL's corefinement on Epeck.
+Section_report boolean_section(const Experiment_context& ctx);  // experiment/boolean.cpp
+
 /// Every section, in run order.
 inline constexpr Experiment_section experiment_sections[] = {
     {"kernels", "orientation grids and predicate workloads under every kernel: wrong answers, "
@@ -134,6 +138,9 @@ inline constexpr Experiment_section experiment_sections[] = {
     {"subdivision", "Loop subdivision: distance of control and limit meshes to the exact limit surface "
                     "per level 0..4 and kernel, error bounds (soundness, tightness), pictures",
      &subdivision_section},
+    {"boolean", "mesh Booleans: general position, shared faces and edges, nested and identical operands under "
+                "every kernel: validity, volume against CGAL's corefinement (Epeck), time, pictures",
+     &boolean_section},
 };
 
 }  // namespace relgeo::tool

@@ -13,8 +13,6 @@
 
 namespace relgeo::tool {
 
-using Mesh_double = Triangle_mesh<Point_3<double>>;
-
 struct Render_options {
   int width = 520, height = 520;
   double azimuth_deg = 35, elevation_deg = 25;  ///< view direction

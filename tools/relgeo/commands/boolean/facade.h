@@ -52,7 +52,7 @@ Boolean_run evaluate_boolean(const std::string& kernel, const Mesh_double& a, co
                              const Boolean_options& options);
 
 /// CGAL's corefinement (Epeck) on the same operands, and how far the result
-/// is from it.                                                        [oracle.cpp]
+/// is from it (an empty `result`: CGAL's figures only).               [oracle.cpp]
 struct Oracle_comparison {
   bool cgal_ok = false;
   double cgal_volume = 0;

@@ -78,7 +78,8 @@ Oracle_comparison compare_with_cgal(const Mesh_double& a, const Mesh_double& b, 
     cgal = doubles(out);
   }
   c.cgal_faces = cgal.faces.size();
-  if (!result.faces.empty() && !cgal.faces.empty()) {
+  if (result.faces.empty()) return c;  // the oracle's figures only
+  if (!cgal.faces.empty()) {
     const auto r = surface<CGAL::Epick>(result), o = surface<CGAL::Epick>(cgal);
     c.hausdorff = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
         r, o, CGAL::parameters::number_of_points_per_area_unit(4000), CGAL::parameters::number_of_points_per_area_unit(4000));

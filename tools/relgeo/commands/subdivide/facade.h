@@ -20,7 +20,6 @@ const std::vector<std::string>& subdivision_kernel_names();
 /// Throws Usage_error unless `name` is one of subdivision_kernel_names().
 void validate_subdivision_kernel(const std::string& name);
 
-using Mesh_double = Triangle_mesh<Point_3<double>>;
 
 /// One bound method summarised over the faces of a limit mesh.
 struct Bound_summary {

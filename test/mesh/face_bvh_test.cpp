@@ -127,7 +127,7 @@ TEST(FaceBvh, SegmentAndRayQueriesNeverMissABoxTheyMeet) {
   std::mt19937_64 g(7);
   std::uniform_real_distribution<double> u(-1.5, 1.5);
   std::size_t hits = 0;
-  for (int trial = 0; trial < 300; ++trial) {
+  for (int trial = 0; trial < 120; ++trial) {
     Point_3<double> p{u(g), u(g), u(g)}, q{u(g), u(g), u(g)};
     if (trial % 3 == 0) q.y = p.y;  // constant along an axis
     if (trial % 5 == 0) p = m.vertices[trial % m.vertices.size()], q = m.vertices[(trial * 7 + 1) % m.vertices.size()];
@@ -155,7 +155,7 @@ TEST(FaceBvh, SegmentAndRayQueriesNeverMissABoxTheyMeet) {
     for (Index f : seg) extra += !exact_line_meets(boxes[f], {p.x, p.y, p.z}, d, true);
     EXPECT_LE(extra, 2u);
   }
-  EXPECT_GT(hits, 300u);  // the family is not trivially empty
+  EXPECT_GT(hits, 120u);  // the family is not trivially empty
 }
 
 TEST(FaceBvh, RationalCoordinatesGetOutwardRoundedBoxes) {

@@ -279,6 +279,24 @@ TEST(SolidValidation, ListsAreCappedCountsAreNot) {
   EXPECT_EQ(all.closed.status, Check_status::not_checked);
 }
 
+TEST(SolidValidation, ATriangleSoupIsReportedInLinearTime) {
+  // 30000 separate triangles: 90000 boundary edges, 30000 components (a
+  // quadratic boundary or per-component step would not finish).
+  Mesh_d soup;
+  for (Index i = 0; i < 30000; ++i) {
+    const double x = 3.0 * (i % 200), y = 3.0 * (i / 200);
+    soup.vertices.insert(soup.vertices.end(), {{x, y, 0}, {x + 1, y, 0}, {x, y + 1, 0.5}});
+    soup.faces.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  const Solid_report r = validate_solid(soup);
+  EXPECT_EQ(r.closed.count, 90000u);
+  EXPECT_EQ(r.components, 30000u);
+  EXPECT_EQ(r.component_list.size(), 100u);
+  EXPECT_EQ(r.euler_characteristic, 30000);
+  EXPECT_TRUE(r.self_intersection_free.passed());
+  EXPECT_TRUE(r.volume.exact);
+}
+
 TEST(SolidValidation, ResultDoesNotDependOnThreads) {
   Mesh_d m = disjoint_union(cube_sphere(8), translated(cube_sphere(8), 0.7, 0.2, 0.1));
   const Solid_report one = validate_solid(m), two = validate_solid(m, {.threads = 2});

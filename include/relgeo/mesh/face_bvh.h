@@ -5,10 +5,10 @@
 // Design. Each face gets an axis-aligned box of doubles that certainly
 // contains it (its coordinates' lower and upper double bounds: exact for
 // double coordinates, rounded outward for rationals, MPFR numbers and
-// intervals). The hierarchy is a binary tree built top down by splitting the
-// faces at the median of their box centres along the longest axis of the
-// centres' bounding box (std::nth_element: O(n log n), no per-node
-// allocation), until at most `leaf_size` faces remain. Nodes live in one
+// intervals). The hierarchy is a binary tree built top down until at most
+// `leaf_size` faces remain, splitting by default where the Morton codes of
+// the box centres differ (radix sort, O(n)), or at the median centre along
+// the longest axis (Face_bvh_split; no per-node allocation). Nodes live in one
 // flat array, the two children of a node next to each other; the faces'
 // boxes are stored in leaf order, so a leaf reads one contiguous block.
 //
@@ -24,7 +24,8 @@
 // the number of threads.
 //
 // Measured against CGAL's box_intersection_d and AABB_tree in
-// benchmark/mesh/face_bvh_benchmark.cpp (doc/mesh.md, "Face BVH").
+// benchmark/mesh/face_bvh_benchmark.cpp (doc/mesh.md, "Self-intersection and
+// solid validation").
 #pragma once
 
 #include <algorithm>

@@ -11,7 +11,7 @@
 // Exact_kernel every pair is decided exactly; a fail-safe or interval
 // kernel lists the pairs it cannot decide instead of guessing. It decides
 // what CGAL::Polygon_mesh_processing::self_intersections decides over an
-// exact kernel (test/mesh/self_intersection_cgal_test.cpp: CGAL's data set
+// exact kernel (test/mesh/solid_validation_cgal_test.cpp: CGAL's data set
 // against Epeck), without CGAL and faster than it over Epick
 // (benchmark/mesh, doc/mesh.md).
 #pragma once

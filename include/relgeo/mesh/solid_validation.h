@@ -268,7 +268,7 @@ Face_components report_topology(const Triangle_mesh<P>& m, const Solid_validatio
 template <class P>
 Signed_volumes report_volume(const Triangle_mesh<P>& m, const Face_components& comps,
                              const Solid_validation_options& o, Solid_report& r) {
-  Signed_volumes v = signed_volumes(m, comps.component, comps.size());
+  Signed_volumes v = signed_volumes(m, comps.component, comps.size(), r.component_list.size());
   r.volume.computed = true;
   r.volume.exact = v.exact;
   r.volume.lower = v.total_lower, r.volume.upper = v.total_upper;

@@ -93,18 +93,20 @@ Mesh_report combinatorial_mesh_report(const Triangle_mesh<P>& m, const Mesh_chec
     if (!internal::point_is_finite(m.vertices[v]))
       r.issues.push_back({Mesh_defect::non_finite_coordinate, {v, invalid_index}});
   const Mesh_topology t = Mesh_topology::build_checked(nv, m.faces, r.issues);
+  // An edge whose other side failed to pair (non-manifold / misoriented) is
+  // already reported; report true boundary edges only (looked up in the
+  // sorted reported edges: linear in the number of edges).
+  std::vector<Edge> reported;
+  for (const Mesh_issue& i : r.issues)
+    if (i.defect == Mesh_defect::non_manifold_edge || i.defect == Mesh_defect::inconsistent_orientation)
+      reported.push_back({i.elements[0], i.elements[1]});
+  std::sort(reported.begin(), reported.end());
   for (Index e = 0; e < t.number_of_edges(); ++e)
     if (options.require_closed && t.is_boundary_edge(e)) {
       const Edge ab = t.edge_vertices(e);
-      // an edge whose other side failed to pair (non-manifold / misoriented)
-      // is already reported; report true boundary edges only
       const Index h = t.edge_halfedge(e);
       if (t.find_halfedge(t.target(h), t.source(h)) == invalid_index &&
-          std::count_if(r.issues.begin(), r.issues.end(), [&](const Mesh_issue& i) {
-            return (i.defect == Mesh_defect::non_manifold_edge ||
-                    i.defect == Mesh_defect::inconsistent_orientation) &&
-                   i.elements[0] == ab.a && i.elements[1] == ab.b;
-          }) == 0)
+          !std::binary_search(reported.begin(), reported.end(), ab))
         r.issues.push_back({Mesh_defect::boundary_edge, {ab.a, ab.b}});
     }
   if (options.report_isolated_vertices) {

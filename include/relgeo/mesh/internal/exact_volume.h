@@ -19,10 +19,10 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <optional>
 #include <type_traits>
 #include <vector>
@@ -136,7 +136,7 @@ struct Signed_volumes {
   mpq_class total;                           ///< the exact volume (when exact)
   double total_lower = 0, total_upper = 0;   ///< bounds of the volume
   std::vector<Certified_sign> sign;          ///< per component
-  std::vector<double> value;                 ///< per component: nearest double (midpoint when not exact)
+  std::vector<double> value;                 ///< the first `listed` components: nearest double (midpoint when not exact)
 };
 
 /// Number types whose values convert exactly to GMP rationals.
@@ -146,15 +146,17 @@ concept Has_exact_rational = requires(const T& x) {
 };
 
 /// The signed volumes of the components (component[f] in [0, components)
-/// for every face). \pre indices in range, finite coordinates.
+/// for every face): the sign of each, the value of the first `listed`.
+/// \pre indices in range, finite coordinates.
 template <class P>
-Signed_volumes signed_volumes(const Triangle_mesh<P>& m, const std::vector<Index>& component, std::size_t components) {
+Signed_volumes signed_volumes(const Triangle_mesh<P>& m, const std::vector<Index>& component, std::size_t components,
+                              std::size_t listed) {
   using A = Point_access<P>;
   using FT = typename A::FT;
   const Default_fp_environment environment;  // the error-free transformations need round to nearest
   Signed_volumes r;
   r.sign.assign(components, Certified_sign::zero);
-  r.value.assign(components, 0.0);
+  r.value.assign(std::min(components, listed), 0.0);
   if constexpr (std::is_same_v<FT, double> || std::is_same_v<FT, float>) {
     r.exact = true;
     const auto coords = [&](Index v) {
@@ -166,31 +168,42 @@ Signed_volumes signed_volumes(const Triangle_mesh<P>& m, const std::vector<Index
       const auto c = coords(v);
       safe[v] = splits_exactly(c[0]) && splits_exactly(c[1]) && splits_exactly(c[2]);
     }
-    std::vector<Exact_sum> sums(components);
-    std::map<Index, mpq_class> rest;  // faces outside the splitting range (rare)
-    for (Index f = 0; f < m.faces.size(); ++f) {
-      const Triangle& t = m.faces[f];
-      if (safe[t[0]] && safe[t[1]] && safe[t[2]]) {
-        add_determinant(sums[component[f]], coords(t[0]), coords(t[1]), coords(t[2]));
-        continue;
-      }
-      std::array<std::array<mpq_class, 3>, 3> q;
-      for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 3; ++k) q[i][k] = exact_rational(coords(t[i])[k]);
-      rest[component[f]] += rational_determinant(q[0], q[1], q[2]);
+    // One component at a time (faces ordered by component, counting sort):
+    // one accumulator in memory however many components there are.
+    std::vector<Index> begin(components + 1, 0), order(m.faces.size());
+    for (Index f = 0; f < m.faces.size(); ++f) ++begin[component[f] + 1];
+    for (std::size_t c = 0; c < components; ++c) begin[c + 1] += begin[c];
+    {
+      std::vector<Index> fill(begin.begin(), begin.end() - 1);
+      for (Index f = 0; f < m.faces.size(); ++f) order[fill[component[f]]++] = f;
     }
     Exact_sum total;
     for (std::size_t c = 0; c < components; ++c) {
-      if (auto it = rest.find(static_cast<Index>(c)); it != rest.end()) {
-        mpq_class v = sums[c].value() + it->second;
-        r.sign[c] = sign_of(sgn(v));
-        r.value[c] = round_rational<double>(v / 6, Rounding::to_nearest);
-        r.total += it->second;
-      } else {
-        r.sign[c] = sums[c].sign();
-        r.value[c] = round_rational<double>(sums[c].value() / 6, Rounding::to_nearest);
+      Exact_sum sum;
+      mpq_class rest = 0;  // faces outside the splitting range (rare)
+      bool has_rest = false;
+      for (Index k = begin[c]; k < begin[c + 1]; ++k) {
+        const Triangle& t = m.faces[order[k]];
+        if (safe[t[0]] && safe[t[1]] && safe[t[2]]) {
+          add_determinant(sum, coords(t[0]), coords(t[1]), coords(t[2]));
+          continue;
+        }
+        std::array<std::array<mpq_class, 3>, 3> q;
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) q[i][j] = exact_rational(coords(t[i])[j]);
+        rest += rational_determinant(q[0], q[1], q[2]);
+        has_rest = true;
       }
-      total.add(sums[c]);
+      if (has_rest) {
+        const mpq_class v = sum.value() + rest;
+        r.sign[c] = sign_of(sgn(v));
+        if (c < listed) r.value[c] = round_rational<double>(v / 6, Rounding::to_nearest);
+        r.total += rest;
+      } else {
+        r.sign[c] = sum.sign();
+        if (c < listed) r.value[c] = round_rational<double>(sum.value() / 6, Rounding::to_nearest);
+      }
+      total.add(sum);
     }
     r.total = (r.total + total.value()) / 6;
   } else if constexpr (Has_exact_rational<FT>) {
@@ -208,7 +221,7 @@ Signed_volumes signed_volumes(const Triangle_mesh<P>& m, const std::vector<Index
     }
     for (std::size_t c = 0; c < components; ++c) {
       r.sign[c] = sign_of(sgn(sums[c]));
-      r.value[c] = round_rational<double>(sums[c] / 6, Rounding::to_nearest);
+      if (c < listed) r.value[c] = round_rational<double>(sums[c] / 6, Rounding::to_nearest);
       r.total += sums[c];
     }
     r.total /= 6;
@@ -231,7 +244,7 @@ Signed_volumes signed_volumes(const Triangle_mesh<P>& m, const std::vector<Index
     Interval total(0.0);
     for (std::size_t c = 0; c < components; ++c) {
       r.sign[c] = sums[c].sign();
-      r.value[c] = Number_traits<Interval>::to_double(sums[c] / Interval(6.0));
+      if (c < listed) r.value[c] = Number_traits<Interval>::to_double(sums[c] / Interval(6.0));
       total = total + sums[c];
     }
     const Interval v = total / Interval(6.0);

@@ -26,6 +26,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libstb-dev
   libopenmesh-dev
+  chromium            # the browser test of the experiment report (tool_experiment_report_in_browser)
 )
 
 log() { printf '[relgeo] %s\n' "$*" >&2; }

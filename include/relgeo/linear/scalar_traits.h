@@ -28,12 +28,6 @@ concept Linear_scalar = Number_traits<S>::kind == Number_kind::floating_point ||
                         Number_traits<S>::kind == Number_kind::mpfr ||
                         Number_traits<S>::kind == Number_kind::rational;
 
-/// The old spelling of Number_traits in this area, kept for the relgeo tool
-/// (tools/relgeo/linear_eval.cpp, linsolve_command.cpp); new code uses
-/// Number_traits.
-template <class S>
-using Scalar_traits = Number_traits<S>;
-
 namespace internal {
 /// What Eigen's traits of a real scalar that lives on the heap (MPFR, GMP)
 /// have in common: its own real and literal type, signed, not an integer,

@@ -200,7 +200,7 @@ inline Nurbs_curve_2<double> polyline_curve(const std::vector<Point_2<double>>& 
 struct Occt_read_options {
   /// Trim loop checks (CAD files meet within their own tolerances: looser
   /// than the default closure tolerance).
-  Trim_options trim{.closure_tolerance = 1e-5, .flattening_tolerance = 1e-4};
+  Trim_options trim{.closure_tolerance = 1e-4, .flattening_tolerance = 1e-4};
 };
 
 /// \brief The faces of an OpenCASCADE shape as a relgeo surface model: every
@@ -272,12 +272,16 @@ inline Surface_model surface_model_from_shape(const TopoDS_Shape& input, const O
 
 /// \brief An OpenCASCADE compound of one face per relgeo face (surface,
 /// wires made of the trim curves as p-curves, 3D curves built), not sewn.
-inline TopoDS_Compound shape_from_surface_model(const Surface_model& m) {
+/// `surfaces` (if given) receives the faces' surfaces in model order (OCC
+/// keeps them when it sews, so they identify the faces afterwards).
+inline TopoDS_Compound shape_from_surface_model(const Surface_model& m,
+                                                std::vector<Handle(Geom_Surface)>* surfaces = nullptr) {
   BRep_Builder builder;
   TopoDS_Compound compound;
   builder.MakeCompound(compound);
   for (const Trimmed_surface& f : m.faces) {
     Handle(Geom_BSplineSurface) gs = to_occt(f.surface());
+    if (surfaces) surfaces->push_back(gs);
     const auto make_wire = [&](const Trim_loop& loop) {
       BRepBuilderAPI_MakeWire mw;
       for (const Trim_curve& t : loop.curves) {

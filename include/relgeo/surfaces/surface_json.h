@@ -255,6 +255,36 @@ inline Surface_model read_surface_model_json(const std::string& path) {
   }
 }
 
+/// \brief Gives model edges their 3D curves from a JSON file (thesis case 1
+/// for edges a model lacks them):
+///   { "edges": [ {"edge": 0, "curve": CURVE3} | {"edge": 2, "polyline": [[x,y,z], ...]} ] }
+/// \throws Unreadable_file (missing, not JSON, missing field), Invalid_input
+/// for an edge index the model does not have.
+inline void read_edge_curves_json(const std::string& path, Surface_model& m) {
+  std::ifstream in(path);
+  if (!in) throw Unreadable_file("cannot open curve file '" + path + "'");
+  nlohmann::json j;
+  try {
+    in >> j;
+    const auto& edges = internal::json_field(j, "edges", path);
+    if (!edges.is_array()) throw Unreadable_file(path + ": 'edges' must be an array");
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      const std::string w = path + ".edges[" + std::to_string(i) + "]";
+      const int e = internal::json_int(edges[i], "edge", w);
+      if (e < 0 || static_cast<std::size_t>(e) >= m.edges.size())
+        throw Invalid_input(w + ": the model has no edge " + std::to_string(e));
+      Model_edge edge;
+      if (edges[i].contains("curve")) edge.curve = nurbs_curve_from_json<3>(edges[i].at("curve"), w);
+      else
+        for (const auto& v : internal::json_points<3>(internal::json_field(edges[i], "polyline", w), w))
+          edge.polyline.push_back(internal::to_point(v));
+      m.edges[static_cast<std::size_t>(e)] = std::move(edge);
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw Unreadable_file("curve file '" + path + "': " + e.what());
+  }
+}
+
 inline void write_surface_model_json(const Surface_model& m, const std::string& path) {
   std::ofstream out(path);
   if (!out) throw Unreadable_file("cannot write surface file '" + path + "'");

@@ -9,8 +9,8 @@
 //  1. project every mesh vertex onto its face: parameters and height;
 //  2. the boundary dR of each face: for each edge, its 3D curve sampled at the
 //     meshes' spacing (case 1), else the median polyline of the two meshes'
-//     boundary chains with its loops deleted (case 2), else the mesh's own
-//     chain (a free edge); projected onto the face: (u,v) and height e;
+//     boundary chains (case 2), else the mesh's own chain (a free edge), the
+//     loops of both deleted; projected onto the face: (u,v) and height e;
 //  3. the central mesh: the projected mesh without its peripheral triangles
 //     (central_mesh.h);
 //  4. the external region between dR and the central mesh triangulated by
@@ -154,7 +154,7 @@ Join_result join_meshes(const Surface_model& model, const std::vector<Triangle_m
     joints = make_joints(model, faces);
     assign_vertices(faces, joints);
     build_joint_polylines(model, faces, joints, options, report);
-    delete_median_loops(faces, joints, k);
+    delete_joint_loops(faces, joints, k);
     for (const Joint& J : joints)
       if (!J.uses.empty()) vertex_points[J.start_vertex] = J.points.front(), vertex_points[J.end_vertex] = J.points.back();
     for (Face_state& s : faces) build_boundary(s, joints, vertex_points);

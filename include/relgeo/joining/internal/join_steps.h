@@ -306,12 +306,13 @@ inline std::pair<Point_2<double>, double> project_key(Face_state& s, const std::
   return s.projected[key] = {p.uv, p.height};
 }
 
-/// Case 2: the loops of median polylines deleted in the (u,v) domains of
-/// both faces (until simple in both), with K's certified predicates.
+/// Case 2: the loops of median polylines (and of a mesh's own boundary
+/// chain along a free edge) deleted in the (u,v) domains of the faces using
+/// them (until simple in all), with K's certified predicates.
 template <class K>
-void delete_median_loops(std::vector<Face_state>& faces, std::vector<Joint>& joints, const K& k) {
+void delete_joint_loops(std::vector<Face_state>& faces, std::vector<Joint>& joints, const K& k) {
   for (Joint& J : joints) {
-    if (J.kind != Joint::Kind::median) continue;
+    if (J.kind == Joint::Kind::curve || J.uses.empty()) continue;
     for (bool changed = true; changed;) {
       changed = false;
       for (const Edge_use& u : J.uses) {

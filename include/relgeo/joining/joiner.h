@@ -113,6 +113,229 @@ struct Face_output {
   std::vector<Triangle> field_triangles;
 };
 
+/// Step 4 over all faces: external regions meshed, and remeshed while a
+/// shared edge carries points one of its faces lacks.
+inline void conform_external_regions(std::vector<Face_state>& faces, std::vector<Joint>& joints,
+                                     const std::map<int, Point_3<double>>& vertex_points, const Join_options& o,
+                                     Join_report& report) {
+  std::vector<char> needs(faces.size(), 1);
+  for (int round = 0;; ++round) {
+    if (round == o.max_conformity_rounds)
+      throw Joining_failure("the points on shared edges did not agree after " + std::to_string(round) + " rounds");
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      if (needs[f]) {
+        if (round > 0) build_boundary(faces[f], joints, vertex_points);
+        mesh_external_region(faces[f], joints, o);
+      }
+    report.conformity_rounds = static_cast<std::size_t>(round) + 1;
+    bool any = false;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      needs[f] = 0;
+      for (const auto& row : faces[f].curve_edge)
+        for (int e : row)
+          for (const auto& [seg, t] : joints[static_cast<std::size_t>(e)].extra)
+            if (!faces[f].keys_present.count(Point_key{-1, e, seg, t})) needs[f] = 1;
+      any = any || needs[f];
+    }
+    if (!any) return;
+  }
+}
+
+/// The joint vertices of the result: one per key (model vertices, joint
+/// points), numbered in order of first use.
+class Joint_vertices {
+ public:
+  Joint_vertices(const std::vector<Joint>& joints, const std::map<int, Point_3<double>>& vertex_points)
+      : joints_(joints), vertex_points_(vertex_points) {}
+  Index id(const Point_key& key) {
+    auto [it, inserted] = index_.emplace(key, static_cast<Index>(points_.size()));
+    if (inserted) points_.push_back(key_point(joints_, key, vertex_points_)), keys_.push_back(key);
+    return it->second;
+  }
+  const std::vector<Point_3<double>>& points() const { return points_; }
+  const Point_key& key(Index v) const { return keys_[v]; }
+  std::size_t size() const { return keys_.size(); }
+
+ private:
+  const std::vector<Joint>& joints_;
+  const std::map<int, Point_3<double>>& vertex_points_;
+  std::map<Point_key, Index> index_;
+  std::vector<Point_3<double>> points_;
+  std::vector<Point_key> keys_;
+};
+
+/// Steps 5 and 6 for one face: the Whitney data (dR points of the final
+/// external mesh), the local vertices and their heights, the external and
+/// (split) central triangles.
+inline Face_output reproject_face(Face_state& s, const std::vector<Joint>& joints,
+                                  const std::map<int, Point_3<double>>& vertex_points, Joint_vertices& joint_vertices,
+                                  const Join_options& o) {
+  Face_output out;
+  std::vector<Whitney_sample> samples;
+  std::vector<std::int64_t> ext_id(s.external.vertices.size(), 0);
+  std::map<Index, Index> local_of_input;  // central mesh vertex -> local index
+  const auto local_input = [&](Index v) {
+    auto [it, inserted] = local_of_input.emplace(v, static_cast<Index>(out.uv.size()));
+    if (inserted) out.uv.push_back(s.input.uv[v]);
+    return static_cast<std::int64_t>(it->second);
+  };
+  // Points Ruppert added on central boundary edges (a, b): (t from a, local id).
+  std::map<std::pair<Index, Index>, std::vector<std::pair<double, std::int64_t>>> central_splits;
+  const std::size_t nb = s.boundary.size();
+  for (std::size_t i = 0; i < s.external.vertices.size(); ++i) {
+    const Domain_vertex& v = s.external.vertices[i];
+    std::optional<Point_key> joint;
+    if (v.is_input() && static_cast<std::size_t>(v.loop) < nb)
+      joint = s.boundary[static_cast<std::size_t>(v.loop)][v.index].key;
+    else if (v.is_on_segment() && static_cast<std::size_t>(v.segment_loop) < nb)
+      joint = steiner_key(s, static_cast<std::size_t>(v.segment_loop), v.segment, v.t);
+    if (joint) {
+      const auto [uv, h] = project_key(s, joints, *joint, vertex_points, v.uv);
+      samples.push_back({uv, h});
+      ext_id[i] = -static_cast<std::int64_t>(joint_vertices.id(*joint)) - 1;
+    } else if (v.is_input()) {  // a central boundary vertex
+      ext_id[i] = local_input(s.central_cycles[static_cast<std::size_t>(v.loop) - nb][v.index]);
+    } else {
+      ext_id[i] = static_cast<std::int64_t>(out.uv.size());
+      out.uv.push_back(v.uv);
+      if (v.is_on_segment()) {
+        const auto& cyc = s.central_cycles[static_cast<std::size_t>(v.segment_loop) - nb];
+        central_splits[{cyc[v.segment], cyc[(v.segment + 1) % cyc.size()]}].push_back({v.t, ext_id[i]});
+      }
+    }
+  }
+  for (const Triangle& t : s.external.triangles) out.triangles.push_back({ext_id[t[0]], ext_id[t[1]], ext_id[t[2]]});
+  for (Index tf = 0; tf < s.triangles.size(); ++tf) {
+    if (!s.central.keep[tf]) continue;
+    const Triangle& t = s.triangles[tf];
+    const std::array<std::int64_t, 3> tri{local_input(t[0]), local_input(t[1]), local_input(t[2])};
+    std::array<std::vector<std::int64_t>, 3> on_edge;
+    for (int i = 0; i < 3; ++i) {
+      // Central cycles run along the kept triangles' own boundary edges.
+      const auto it = central_splits.find({t[i], t[(i + 1) % 3]});
+      if (it == central_splits.end()) continue;
+      auto pts = it->second;
+      std::sort(pts.begin(), pts.end());
+      for (const auto& [param, id] : pts) on_edge[i].push_back(id);  // from t[i] to t[i+1]
+    }
+    split_triangle(tri, on_edge, out.triangles);
+  }
+  Join_face_report& r = s.report;
+  r.external_triangles = s.external.triangles.size();
+  r.central_triangles = s.central.kept();
+  r.removed_triangles = s.triangles.size() - s.central.kept();
+  const Whitney_extension w(samples, o.whitney);
+  r.boundary_samples = w.samples().size();
+  r.boundary_max_abs_height = w.max_abs_height();
+  r.lipschitz_constant = w.lipschitz_constant();
+  r.data_lipschitz_constant = w.data_lipschitz_constant();
+  for (const Whitney_value& v : w.evaluate_all(out.uv)) {
+    out.height.push_back(v.height);
+    r.max_deviation = std::max(r.max_deviation, v.deviation);
+    r.whitney_fallbacks += v.fallback, r.whitney_uncertified += !v.certified;
+  }
+  for (std::size_t i = 0; i < out.uv.size(); ++i) out.points.push_back(s.projector->lift(out.uv[i], out.height[i]));
+  return out;
+}
+
+/// The measures of one face's part of the result (file comment).
+template <class K>
+void measure_face(Face_state& s, const Face_output& out, const std::vector<Joint>& joints,
+                  const std::map<int, Point_3<double>>& vertex_points, const Joint_vertices& joint_vertices, const K& k) {
+  // The face's height field: local vertices, then its joint vertices.
+  Height_field hf{out.uv, out.height};
+  std::map<Index, Index> joint_local;
+  std::vector<Triangle> tris;
+  for (const auto& t : out.triangles) {
+    Triangle g;
+    for (int i = 0; i < 3; ++i) {
+      if (t[i] >= 0) {
+        g[i] = static_cast<Index>(t[i]);
+        continue;
+      }
+      const Index j = static_cast<Index>(-t[i] - 1);
+      const auto [it, inserted] = joint_local.emplace(j, static_cast<Index>(hf.uv.size()));
+      if (inserted) {
+        const auto [uv, h] = project_key(s, joints, joint_vertices.key(j), vertex_points, std::nullopt);
+        hf.uv.push_back(uv), hf.height.push_back(h);
+      }
+      g[i] = it->second;
+    }
+    tris.push_back(g);
+  }
+  Join_face_report& r = s.report;
+  r.output_vertices = hf.uv.size(), r.output_triangles = tris.size();
+  const Patch_errors after = patch_errors(tris, hf);
+  r.after = {after.absolute_error, after.normal_vector_error};
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const Triangle& t : tris)
+    for (int i = 0; i < 3; ++i) {
+      const Point_2<double>&a = hf.uv[t[i]], &b = hf.uv[t[(i + 1) % 3]];
+      r.edges_above_lipschitz +=
+          slope_upper_bound(a, hf.height[t[i]], b, hf.height[t[(i + 1) % 3]]) > r.lipschitz_constant;
+      shortest = std::min(shortest, std::hypot(a.x - b.x, a.y - b.y));
+    }
+  const Orientation_report o = uv_orientations<K>(tris, hf.uv, Certified_sign::positive, k);
+  r.orientation_after = {o.positive, o.flipped, o.degenerate, o.undecided};
+  const Overlap_report ov = uv_overlaps<K>(tris, hf.uv, k);
+  r.overlaps_after = ov.overlapping.size(), r.overlaps_undecided_after = ov.undecided.size();
+  r.min_angle_external = s.external.min_angle_degrees;
+  // The result's points projected onto the face again.
+  Height_field re;
+  for (std::size_t i = 0; i < hf.uv.size(); ++i) {
+    const Surface_projection p = s.projector->project(s.projector->lift(hf.uv[i], hf.height[i]), hf.uv[i]);
+    re.uv.push_back(p.uv), re.height.push_back(p.height);
+  }
+  const Patch_errors again = patch_errors(tris, re);
+  r.after_reprojected = {again.absolute_error, again.normal_vector_error};
+  // A slope above L can only come from the deviation of a^ (G3): at most
+  // 2 max_deviation / shortest edge.
+  const double slope_allowance = r.lipschitz_constant + 2 * r.max_deviation / shortest;
+  r.guarantees_hold = r.after.absolute <= r.boundary_max_abs_height && r.after.normal_vector <= slope_allowance &&
+                      r.whitney_uncertified == 0 && o.all_positive() && ov.is_embedding();
+}
+
+/// Conformity, seams and angles of the whole result.
+inline void measure_mesh(const Triangle_mesh<Point_3<double>>& m, const std::vector<Joint>& joints,
+                         const Joint_vertices& joint_vertices, Join_report& report) {
+  report.vertices = m.vertices.size(), report.triangles = m.faces.size();
+  std::vector<Mesh_issue> issues;
+  const Mesh_topology t = Mesh_topology::build_checked(m.vertices.size(), m.faces, issues);
+  for (const Mesh_issue& i : issues) {
+    report.non_manifold_edges += i.defect == Mesh_defect::non_manifold_edge;
+    report.inconsistent_orientations += i.defect == Mesh_defect::inconsistent_orientation;
+  }
+  // A boundary edge of the result between two joint vertices of one shared
+  // edge is a gap in a seam.
+  const auto on_edge = [&](Index v, std::size_t j) {
+    if (v >= joint_vertices.size()) return false;
+    const Point_key& key = joint_vertices.key(v);
+    if (key.vertex < 0) return key.edge == static_cast<int>(j);
+    return key.vertex == joints[j].start_vertex || key.vertex == joints[j].end_vertex;
+  };
+  for (Index e = 0; e < t.number_of_edges(); ++e) {
+    if (!t.is_boundary_edge(e)) continue;
+    ++report.boundary_edges;
+    const Edge ab = t.edge_vertices(e);
+    bool gap = false;
+    for (std::size_t j = 0; j < joints.size() && !gap; ++j)
+      gap = joints[j].uses.size() == 2 && on_edge(ab.a, j) && on_edge(ab.b, j) &&
+            (joint_vertices.key(ab.a).vertex < 0 || joint_vertices.key(ab.b).vertex < 0 || joints[j].points.size() == 2);
+    report.seam_boundary_edges += gap;
+  }
+  report.conforming = report.non_manifold_edges == 0 && report.inconsistent_orientations == 0 && report.seam_boundary_edges == 0;
+  report.watertight_seams = report.seam_boundary_edges == 0;
+  report.min_angle_3d = 180;
+  const auto angle = [&](Index o, Index p, Index q) {
+    const auto &A = m.vertices[o], &B = m.vertices[p], &C = m.vertices[q];
+    const double ux = B.x - A.x, uy = B.y - A.y, uz = B.z - A.z, vx = C.x - A.x, vy = C.y - A.y, vz = C.z - A.z;
+    const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+    return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz) * 180 / M_PI;
+  };
+  for (const Triangle& f : m.faces)
+    report.min_angle_3d = std::min({report.min_angle_3d, angle(f[0], f[1], f[2]), angle(f[1], f[2], f[0]), angle(f[2], f[0], f[1])});
+}
+
 }  // namespace internal::join
 
 /// \brief Joins the mesh patches `meshes` (one per face of `model`, in
@@ -170,129 +393,21 @@ Join_result join_meshes(const Surface_model& model, const std::vector<Triangle_m
     }
   });
 
-  step("external region", [&] {
-    std::vector<char> needs(faces.size(), 1);
-    for (int round = 0;; ++round) {
-      if (round == options.max_conformity_rounds)
-        throw Joining_failure("the points on shared edges did not agree after " + std::to_string(round) + " rounds");
-      for (std::size_t f = 0; f < faces.size(); ++f)
-        if (needs[f]) {
-          if (round > 0) build_boundary(faces[f], joints, vertex_points);
-          mesh_external_region(faces[f], joints, options);
-        }
-      report.conformity_rounds = static_cast<std::size_t>(round) + 1;
-      bool any = false;
-      for (std::size_t f = 0; f < faces.size(); ++f) {
-        needs[f] = 0;
-        for (const auto& row : faces[f].curve_edge)
-          for (int e : row)
-            for (const auto& [seg, t] : joints[static_cast<std::size_t>(e)].extra)
-              if (!faces[f].keys_present.count(Point_key{-1, e, seg, t})) needs[f] = 1;
-        any = any || needs[f];
-      }
-      if (!any) break;
-    }
-  });
+  step("external region", [&] { conform_external_regions(faces, joints, vertex_points, options, report); });
 
-  // Global joint vertices: one per key (model vertices and edge points).
-  std::map<Point_key, Index> joint_index;
-  std::vector<Point_3<double>> joint_points;
-  std::vector<Point_key> key_of;  // joint vertex -> its key
-  const auto joint_id = [&](const Point_key& key) {
-    auto [it, inserted] = joint_index.emplace(key, static_cast<Index>(joint_points.size()));
-    if (inserted) joint_points.push_back(key_point(joints, key, vertex_points)), key_of.push_back(key);
-    return it->second;
-  };
-
-  std::vector<Face_output> outputs(faces.size());
+  Joint_vertices joint_vertices(joints, vertex_points);
+  std::vector<Face_output> outputs;
   step("whitney reprojection", [&] {
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      Face_state& s = faces[f];
-      Face_output& out = outputs[f];
-      // The Whitney data: every dR point of the final external mesh.
-      std::vector<Whitney_sample> samples;
-      std::vector<std::int64_t> ext_id(s.external.vertices.size(), 0);
-      std::map<Index, Index> local_of_input;  // central mesh vertex -> local index
-      const auto local_input = [&](Index v) {
-        auto [it, inserted] = local_of_input.emplace(v, static_cast<Index>(out.uv.size()));
-        if (inserted) out.uv.push_back(s.input.uv[v]);
-        return static_cast<std::int64_t>(it->second);
-      };
-      std::map<std::pair<Index, Index>, std::vector<std::pair<double, std::int64_t>>> central_splits;
-      const std::size_t nb = s.boundary.size();
-      for (std::size_t i = 0; i < s.external.vertices.size(); ++i) {
-        const Domain_vertex& v = s.external.vertices[i];
-        Point_key key;
-        bool on_joint = false;
-        if (v.is_input() && static_cast<std::size_t>(v.loop) < nb) {
-          key = s.boundary[static_cast<std::size_t>(v.loop)][v.index].key, on_joint = true;
-        } else if (v.is_on_segment() && static_cast<std::size_t>(v.segment_loop) < nb) {
-          key = steiner_key(s, static_cast<std::size_t>(v.segment_loop), v.segment, v.t), on_joint = true;
-        }
-        if (on_joint) {
-          const auto [uv, h] = project_key(s, joints, key, vertex_points, v.uv);
-          samples.push_back({uv, h});
-          ext_id[i] = -static_cast<std::int64_t>(joint_id(key)) - 1;
-          continue;
-        }
-        if (v.is_input()) {  // a central boundary vertex
-          ext_id[i] = local_input(s.central_cycles[static_cast<std::size_t>(v.loop) - nb][v.index]);
-          continue;
-        }
-        ext_id[i] = static_cast<std::int64_t>(out.uv.size());
-        out.uv.push_back(v.uv);
-        if (v.is_on_segment()) {  // splits a central boundary edge
-          const auto& cyc = s.central_cycles[static_cast<std::size_t>(v.segment_loop) - nb];
-          const Index a = cyc[v.segment], b = cyc[(v.segment + 1) % cyc.size()];
-          central_splits[{a, b}].push_back({v.t, ext_id[i]});
-        }
-      }
-      // Triangles: the external region's, and the central mesh's split where needed.
-      for (const Triangle& t : s.external.triangles) out.triangles.push_back({ext_id[t[0]], ext_id[t[1]], ext_id[t[2]]});
-      s.report.external_triangles = s.external.triangles.size();
-      for (Index tf = 0; tf < s.triangles.size(); ++tf) {
-        if (!s.central.keep[tf]) continue;
-        const Triangle& t = s.triangles[tf];
-        std::array<std::int64_t, 3> tri{local_input(t[0]), local_input(t[1]), local_input(t[2])};
-        std::array<std::vector<std::int64_t>, 3> on_edge;
-        for (int i = 0; i < 3; ++i) {
-          // The external region runs along the central boundary the other way.
-          // Central cycles run along the kept triangles' own boundary edges
-          // (t from their first vertex).
-          const auto it = central_splits.find({t[i], t[(i + 1) % 3]});
-          if (it == central_splits.end()) continue;
-          auto pts = it->second;
-          std::sort(pts.begin(), pts.end());
-          for (const auto& [param, id] : pts) on_edge[i].push_back(id);  // from t[i] to t[i+1]
-        }
-        split_triangle(tri, on_edge, out.triangles);
-      }
-      s.report.central_triangles = s.central.kept();
-      s.report.removed_triangles = s.triangles.size() - s.central.kept();
-      // Whitney heights at the local vertices.
-      const Whitney_extension w(samples, options.whitney);
-      const std::vector<Whitney_value> a = w.evaluate_all(out.uv);
-      s.report.boundary_samples = w.samples().size();
-      s.report.boundary_max_abs_height = w.max_abs_height();
-      s.report.lipschitz_constant = w.lipschitz_constant();
-      s.report.data_lipschitz_constant = w.data_lipschitz_constant();
-      for (const Whitney_value& v : a) {
-        out.height.push_back(v.height);
-        s.report.max_deviation = std::max(s.report.max_deviation, v.deviation);
-        s.report.whitney_fallbacks += v.fallback, s.report.whitney_uncertified += !v.certified;
-      }
-      for (std::size_t i = 0; i < out.uv.size(); ++i) out.points.push_back(s.projector->lift(out.uv[i], out.height[i]));
-    }
+    for (Face_state& s : faces) outputs.push_back(reproject_face(s, joints, vertex_points, joint_vertices, options));
   });
 
   step("merge", [&] {
     Triangle_mesh<Point_3<double>>& m = result.mesh;
-    m.vertices = joint_points;
+    m.vertices = joint_vertices.points();
     for (std::size_t f = 0; f < faces.size(); ++f) {
-      Face_output& out = outputs[f];
       const Index base = static_cast<Index>(m.vertices.size());
-      m.vertices.insert(m.vertices.end(), out.points.begin(), out.points.end());
-      for (const auto& t : out.triangles) {
+      m.vertices.insert(m.vertices.end(), outputs[f].points.begin(), outputs[f].points.end());
+      for (const auto& t : outputs[f].triangles) {
         Triangle g;
         for (int i = 0; i < 3; ++i) g[i] = t[i] >= 0 ? base + static_cast<Index>(t[i]) : static_cast<Index>(-t[i] - 1);
         if (model.faces[f].reversed()) std::swap(g[1], g[2]);
@@ -302,109 +417,15 @@ Join_result join_meshes(const Surface_model& model, const std::vector<Triangle_m
     }
   });
 
-  // ---- measures --------------------------------------------------------------
   step("measures", [&] {
     for (std::size_t f = 0; f < faces.size(); ++f) {
-      Face_state& s = faces[f];
-      Face_output& out = outputs[f];
-      // This face's height field: local vertices, then its joint vertices.
-      Height_field hf{out.uv, out.height};
-      std::map<Index, Index> joint_local;
-      std::vector<Triangle> tris;
-      for (const auto& t : out.triangles) {
-        Triangle g;
-        for (int i = 0; i < 3; ++i) {
-          if (t[i] >= 0) {
-            g[i] = static_cast<Index>(t[i]);
-            continue;
-          }
-          const Index j = static_cast<Index>(-t[i] - 1);
-          auto [it, inserted] = joint_local.emplace(j, static_cast<Index>(hf.uv.size()));
-          if (inserted) {
-            const auto [uv, h] = project_key(s, joints, key_of[j], vertex_points, std::nullopt);
-            hf.uv.push_back(uv), hf.height.push_back(h);
-          }
-          g[i] = it->second;
-        }
-        tris.push_back(g);
-      }
-      Join_face_report& r = s.report;
-      r.output_vertices = hf.uv.size(), r.output_triangles = tris.size();
-      const Patch_errors after = patch_errors(tris, hf);
-      r.after = {after.absolute_error, after.normal_vector_error};
-      for (const Triangle& t : tris)
-        for (int i = 0; i < 3; ++i)
-          r.edges_above_lipschitz += slope_upper_bound(hf.uv[t[i]], hf.height[t[i]], hf.uv[t[(i + 1) % 3]],
-                                                       hf.height[t[(i + 1) % 3]]) > r.lipschitz_constant;
-      const Orientation_report o = uv_orientations<K>(tris, hf.uv, Certified_sign::positive, k);
-      r.orientation_after = {o.positive, o.flipped, o.degenerate, o.undecided};
-      const Overlap_report ov = uv_overlaps<K>(tris, hf.uv, k);
-      r.overlaps_after = ov.overlapping.size(), r.overlaps_undecided_after = ov.undecided.size();
-      r.min_angle_external = s.external.min_angle_degrees;
-      // Reprojected: the result's points projected onto the face again.
-      Height_field re;
-      for (std::size_t i = 0; i < hf.uv.size(); ++i) {
-        const Point_3<double> x = s.projector->lift(hf.uv[i], hf.height[i]);
-        const Surface_projection p = s.projector->project(x, hf.uv[i]);
-        re.uv.push_back(p.uv), re.height.push_back(p.height);
-      }
-      const Patch_errors again = patch_errors(tris, re);
-      r.after_reprojected = {again.absolute_error, again.normal_vector_error};
-      // Slope excess beyond L comes only from the deviation of a^ (|a^ - a|
-      // <= max_deviation, G3): bounded here by 2 max_deviation / shortest edge.
-      double shortest = std::numeric_limits<double>::infinity();
-      for (const Triangle& t : tris)
-        for (int i = 0; i < 3; ++i)
-          shortest = std::min(shortest, std::hypot(hf.uv[t[i]].x - hf.uv[t[(i + 1) % 3]].x, hf.uv[t[i]].y - hf.uv[t[(i + 1) % 3]].y));
-      const double slope_allowance = r.lipschitz_constant + 2 * r.max_deviation / shortest;
-      r.guarantees_hold = r.after.absolute <= r.boundary_max_abs_height && r.after.normal_vector <= slope_allowance &&
-                          r.whitney_uncertified == 0 && o.all_positive() && ov.is_embedding();
-      report.flipped_triangles += o.flipped;
-      report.faces.push_back(r);
+      measure_face(faces[f], outputs[f], joints, vertex_points, joint_vertices, k);
+      report.flipped_triangles += faces[f].report.orientation_after.flipped;
+      report.faces.push_back(faces[f].report);
     }
-    const Triangle_mesh<Point_3<double>>& m = result.mesh;
-    report.vertices = m.vertices.size(), report.triangles = m.faces.size();
-    std::vector<Mesh_issue> issues;
-    const Mesh_topology t = Mesh_topology::build_checked(m.vertices.size(), m.faces, issues);
-    for (const Mesh_issue& i : issues) {
-      report.non_manifold_edges += i.defect == Mesh_defect::non_manifold_edge;
-      report.inconsistent_orientations += i.defect == Mesh_defect::inconsistent_orientation;
-    }
-    // A boundary edge of the result between two joint vertices of one shared
-    // edge is a gap in a seam.
-    const auto on_shared_edge = [&](Index v, int edge) {
-      if (v >= key_of.size()) return false;
-      const Point_key& key = key_of[v];
-      if (key.vertex < 0) return key.edge == edge;
-      const Joint& J = joints[static_cast<std::size_t>(edge)];
-      return key.vertex == J.start_vertex || key.vertex == J.end_vertex;
-    };
-    for (Index e = 0; e < t.number_of_edges(); ++e) {
-      if (!t.is_boundary_edge(e)) continue;
-      ++report.boundary_edges;
-      const Edge ab = t.edge_vertices(e);
-      bool seam_gap = false;
-      for (std::size_t j = 0; j < joints.size() && !seam_gap; ++j)
-        seam_gap = joints[j].uses.size() == 2 && on_shared_edge(ab.a, static_cast<int>(j)) &&
-                   on_shared_edge(ab.b, static_cast<int>(j)) &&
-                   (ab.a < key_of.size() && (key_of[ab.a].vertex < 0 || key_of[ab.b].vertex < 0 || joints[j].points.size() == 2));
-      report.seam_boundary_edges += seam_gap;
-    }
-    report.conforming = report.non_manifold_edges == 0 && report.inconsistent_orientations == 0 && report.seam_boundary_edges == 0;
-    report.watertight_seams = report.seam_boundary_edges == 0;
-    report.min_angle_3d = 180;
-    for (const Triangle& f : m.faces) {
-      const auto angle = [&](Index o, Index p, Index q) {
-        const auto& A = m.vertices[o];
-        const auto& B = m.vertices[p];
-        const auto& C = m.vertices[q];
-        const double ux = B.x - A.x, uy = B.y - A.y, uz = B.z - A.z, vx = C.x - A.x, vy = C.y - A.y, vz = C.z - A.z;
-        const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-        return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz) * 180 / M_PI;
-      };
-      report.min_angle_3d = std::min({report.min_angle_3d, angle(f[0], f[1], f[2]), angle(f[1], f[2], f[0]), angle(f[2], f[0], f[1])});
-    }
-    report.guarantees_hold = std::all_of(report.faces.begin(), report.faces.end(), [](const Join_face_report& r) { return r.guarantees_hold; });
+    measure_mesh(result.mesh, joints, joint_vertices, report);
+    report.guarantees_hold = std::all_of(report.faces.begin(), report.faces.end(),
+                                         [](const Join_face_report& r) { return r.guarantees_hold; });
   });
   report.total_seconds = seconds_since(start);
   return result;

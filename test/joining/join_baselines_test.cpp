@@ -10,6 +10,7 @@
 #include "relgeo/joining/joiner.h"
 #include "relgeo/joining/naive_sewing.h"
 #include "relgeo/kernel.h"
+#include "relgeo/kernel/cgal_kernel.h"
 
 namespace {
 
@@ -18,7 +19,8 @@ using namespace relgeo_test;
 
 template <class K>
 class FoldingConfiguration : public ::testing::Test {};
-using Certified_kernels = ::testing::Types<Failsafe_kernel<double>, Interval_kernel, Filtered_exact_kernel, Exact_kernel>;
+using Certified_kernels = ::testing::Types<Failsafe_kernel<double>, Interval_kernel, Filtered_exact_kernel, Exact_kernel,
+                                           Cgal_kernel<CGAL::Epick>>;
 TYPED_TEST_SUITE(FoldingConfiguration, Certified_kernels);
 
 TYPED_TEST(FoldingConfiguration, NaiveSewingFoldsWhitneyDoesNot) {

@@ -20,6 +20,7 @@ inline std::vector<relgeo::Joining_case> joining_cases() {
   std::vector<Joining_case> cases;
   cases.push_back(make_joining_case("two faces, case 1", two_face_model(true)));
   cases.push_back(make_joining_case("two faces, case 2", two_face_model(false)));
+  cases.push_back(make_joining_case("two faces, all curves", two_face_model(true, 2e-3, true)));
   cases.push_back(make_joining_case("three faces, case 1", three_face_model(true)));
   cases.push_back(make_joining_case("three faces, case 2", three_face_model(false)));
   cases.push_back(make_joining_case("cylinder and plane, case 1", cylinder_and_plane_model(true)));

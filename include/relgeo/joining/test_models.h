@@ -85,12 +85,19 @@ inline Trim_curve segment_curve(Point_2<double> a, Point_2<double> b, int edge, 
 inline Trim_curve cubic_curve(std::vector<Point_2<double>> control, int edge, bool reversed = false) {
   return {Nurbs_curve_2<double>(3, {0, 0, 0, 0, 1, 1, 1, 1}, std::move(control)), reversed, edge};
 }
-/// The surface curve S(c(t)) as a dense 3D polyline (an edge's "given" curve).
+/// The surface curve S(c(t)) as a dense 3D polyline (an edge's "given"
+/// curve), in the trim curve's natural direction.
 inline Model_edge surface_curve_edge(const Nurbs_surface<double>& s, const Trim_curve& c, std::size_t n = 400) {
   Model_edge e;
-  const auto& curve = std::get<1>(c.geometry);
   for (std::size_t i = 0; i <= n; ++i) {
-    const Point_2<double> p = curve.evaluate(static_cast<double>(i) / static_cast<double>(n));
+    const double t = static_cast<double>(i) / static_cast<double>(n);
+    Point_2<double> p;
+    if (c.is_polyline()) {  // a segment (the test models' polylines have two points)
+      const auto& pl = std::get<0>(c.geometry);
+      p = {pl.front().x + t * (pl.back().x - pl.front().x), pl.front().y + t * (pl.back().y - pl.front().y)};
+    } else {
+      p = std::get<1>(c.geometry).evaluate(t);
+    }
     e.polyline.push_back(s.evaluate(p.x, p.y));
   }
   return e;
@@ -114,8 +121,10 @@ inline Nurbs_surface<double> bicubic_surface(double width = 2, double bump = 0) 
 /// `gap`) meeting along a wavy curve u = c(v): face 0 left of it, face 1
 /// right. Edge 0 is the shared edge; with `edge_curve` it carries the 3D
 /// curve (on face 0's surface: case 1), otherwise none (case 2). The other
-/// edges are free.
-inline Surface_model two_face_model(bool edge_curve, double gap = 2e-3) {
+/// edges are free; with `free_edge_curves` they carry their 3D curves too
+/// (each on its own face's surface: every boundary height is then the
+/// surfaces' own discrepancy, not the mesh's noise).
+inline Surface_model two_face_model(bool edge_curve, double gap = 2e-3, bool free_edge_curves = false) {
   const Nurbs_surface<double> s0 = bicubic_surface(2, 0), s1 = bicubic_surface(2, gap);
   const Trim_curve c = internal::cubic_curve({{0.5, 0}, {0.42, 0.35}, {0.58, 0.65}, {0.5, 1}}, 0);
   Surface_model m;
@@ -129,6 +138,12 @@ inline Surface_model two_face_model(bool edge_curve, double gap = 2e-3) {
   Trim_loop b;
   b.curves = {internal::segment_curve({0.5, 0}, {1, 0}, 4), internal::segment_curve({1, 0}, {1, 1}, 5),
               internal::segment_curve({1, 1}, {0.5, 1}, 6), back};
+  if (free_edge_curves) {
+    for (std::size_t i = 0; i < a.curves.size(); ++i)
+      if (a.curves[i].edge != 0) m.edges[static_cast<std::size_t>(a.curves[i].edge)] = internal::surface_curve_edge(s0, a.curves[i]);
+    for (std::size_t i = 0; i < b.curves.size(); ++i)
+      if (b.curves[i].edge != 0) m.edges[static_cast<std::size_t>(b.curves[i].edge)] = internal::surface_curve_edge(s1, b.curves[i]);
+  }
   m.faces.emplace_back(s0, a);
   m.faces.emplace_back(s1, b);
   return m;

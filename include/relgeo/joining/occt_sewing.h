@@ -55,8 +55,10 @@ Join_result occt_sewing(const Surface_model& model, const std::vector<Triangle_m
   for (std::size_t f = 0; f < faces.size(); ++f) {
     faces[f].face = &model.faces[f];
     prepare_face(faces[f], meshes[f], f, Join_options{}, k);
-    for (const auto& p : meshes[f].vertices)
-      for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], (&p.x)[c]), hi[c] = std::max(hi[c], (&p.x)[c]);
+    for (const auto& p : meshes[f].vertices) {
+      const double xyz[3] = {p.x, p.y, p.z};
+      for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], xyz[c]), hi[c] = std::max(hi[c], xyz[c]);
+    }
   }
   const double scale = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
   std::vector<Handle(Geom_Surface)> surfaces;

@@ -1,6 +1,6 @@
 // benchmark/joining/figure_canvas.h — a small RGB canvas for the joining
 // figures: lines, filled triangles with a depth buffer, text (stb_easy_font),
-// written as PNG (stb_image_write, compiled in joining_figures.cpp).
+// written as PNG through relgeo/io/png.h (joining_figures.cpp).
 #pragma once
 
 #include <algorithm>
@@ -80,7 +80,7 @@ class Canvas {
   std::vector<double> depth_;
 };
 
-/// Writes the canvas as PNG; false on failure.
-bool write_png(const std::string& path, const Canvas& c);
+/// Writes the canvas as PNG. \throws relgeo::io::Unwritable_file.
+void write_png(const std::string& path, const Canvas& c);
 
 }  // namespace relgeo_figures

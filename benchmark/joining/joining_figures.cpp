@@ -25,14 +25,13 @@
 #pragma GCC diagnostic ignored "-Wunused-function"
 #pragma GCC diagnostic ignored "-Wcast-qual"
 #endif
-#define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_easy_font.h>
-#include <stb_image_write.h>
 #if defined(__GNUC__)
 #pragma GCC diagnostic pop
 #endif
 
 #include "figure_canvas.h"
+#include "relgeo/io/png.h"
 #include "relgeo/joining/joiner.h"
 #include "relgeo/joining/naive_sewing.h"
 #include "relgeo/joining/test_models.h"
@@ -52,8 +51,11 @@ void Canvas::text(double x, double y, const std::string& s, Color c, int scale) 
   }
 }
 
-bool write_png(const std::string& path, const Canvas& c) {
-  return stbi_write_png(path.c_str(), c.width(), c.height(), 3, c.pixels().data(), c.width() * 3) != 0;
+void write_png(const std::string& path, const Canvas& c) {
+  relgeo::io::Image image = relgeo::io::Image::filled(c.width(), c.height());
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    image.pixels[i] = {c.pixels()[3 * i], c.pixels()[3 * i + 1], c.pixels()[3 * i + 2]};
+  relgeo::io::write_png(path, image);
 }
 
 }  // namespace relgeo_figures

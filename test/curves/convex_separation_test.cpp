@@ -144,14 +144,18 @@ TEST(ConvexSeparation, DegenerateHulls) {
 }
 
 TEST(ConvexSeparation, DirectedSquareRoots) {
+  // A signed distance's value is rounded outward on either side.
   for (const mpq_class& q : {mpq_class(2), mpq_class(1, 3), mpq_class(0), mpq_class(mpq_class(1, 10) * mpq_class(1, 10))}) {
-    const double lo = sqrt_down(q), hi = sqrt_up(q);
+    const Signed_distance apart{1, q}, overlapping{-1, q};
+    const double lo = apart.lower(), hi = apart.upper();
     EXPECT_LE(mpq_class(lo) * lo, q);
     EXPECT_GE(mpq_class(hi) * hi, q);
     EXPECT_LE(hi, std::nextafter(std::nextafter(lo, INFINITY), INFINITY));  // within 2 ulps
+    EXPECT_EQ(overlapping.lower(), -hi);
+    EXPECT_EQ(overlapping.upper(), -lo);
   }
-  EXPECT_EQ(sqrt_down(mpq_class(4)), 2.0);
-  EXPECT_EQ(sqrt_up(mpq_class(4)), 2.0);
+  EXPECT_EQ((Signed_distance{1, mpq_class(4)}.lower()), 2.0);
+  EXPECT_EQ((Signed_distance{1, mpq_class(4)}.upper()), 2.0);
 }
 
 }  // namespace

@@ -32,9 +32,12 @@ TEST(ConvexPolygon, LocateIsExact) {
 TEST(ConvexPolygon, DistancesAreExactAndRoundedUp) {
   EXPECT_EQ(squared_distance(kSquare, {7, 8}), 9 + 16);
   EXPECT_EQ(squared_distance(kSquare, {2, 6}), 4);
-  EXPECT_EQ(sqrt_ratio_up(25, 1), 5.0);
-  const double r = sqrt_ratio_up(2, 1);
+  const std::vector<P2> origin{{0, 0}};
+  EXPECT_EQ(hausdorff_distance(origin, std::vector<P2>{{3, 4}}), 5.0);
+  const double r = hausdorff_distance(origin, std::vector<P2>{{1, 1}});
   EXPECT_GE(mpq_class(r) * mpq_class(r), 2);  // never below the true sqrt(2)
+  EXPECT_EQ(hausdorff_distance(origin, std::vector<P2>{{3, 4}}, 2.0), 2.5);  // over the scale
+  EXPECT_THROW((void)hausdorff_distance(origin, origin, 0.0), Invalid_input);
   EXPECT_EQ(hausdorff_distance(kSquare, std::vector<P2>{{0, 0}, {4, 0}, {4, 5}, {0, 4}}), 1.0);
 }
 

@@ -162,6 +162,40 @@ TEST(HullExactKernel, RationalAndDoublePathsAgree) {
   }
 }
 
+// The double-point hook (kernel/kernel_for_number.h) is what sends
+// Exact_kernel to doubles: a kernel naming another Double_point_kernel gets
+// that one, once per run, for every algorithm, and only when every point is a
+// double exactly.
+static_assert(Has_double_point_kernel<Exact_kernel>);
+static_assert(!Has_double_point_kernel<Filtered_exact_kernel>);
+static_assert(!Has_double_point_kernel<Interval_kernel>);
+static_assert(!Has_double_point_kernel<Failsafe_kernel<double>>);
+struct Counted_double_kernel : Filtered_exact_kernel {
+  static inline int runs = 0;
+  Counted_double_kernel() { ++runs; }
+};
+struct Exact_kernel_with_counted_hook : Exact_kernel {
+  using Double_point_kernel = Counted_double_kernel;
+};
+TEST(HullExactKernel, TheFrameConsultsTheDoublePointHookOnce) {
+  static_assert(Has_double_point_kernel<Exact_kernel_with_counted_hook>);
+  const Exact_kernel k;
+  const std::vector<Exact_kernel::Point_2> doubles{k.construct_point_2_object()(0, 0), k.construct_point_2_object()(4, 0),
+                                                   k.construct_point_2_object()(1, 3), k.construct_point_2_object()(1, 1)};
+  std::vector<Exact_kernel::Point_2> not_doubles = doubles;
+  not_doubles[3].x = mpq_class(1, 3);
+  for (Algorithm a : kAlgorithms) {
+    Counted_double_kernel::runs = 0;
+    const auto on_doubles = run<Exact_kernel_with_counted_hook>(a, doubles);
+    EXPECT_EQ(Counted_double_kernel::runs, 1);
+    EXPECT_EQ(on_doubles.indices, (std::vector<std::size_t>{0, 1, 2}));
+    EXPECT_EQ(on_doubles.points, (std::vector<Exact_kernel::Point_2>{doubles[0], doubles[1], doubles[2]}));
+    Counted_double_kernel::runs = 0;
+    EXPECT_EQ(run<Exact_kernel_with_counted_hook>(a, not_doubles).indices, (std::vector<std::size_t>{0, 1, 2}));
+    EXPECT_EQ(Counted_double_kernel::runs, 0);
+  }
+}
+
 // Large inputs (where the interior prefilter runs) reject NaN and infinity
 // before anything else, wherever the bad point sits.
 TEST(HullBadInput, NonFiniteCoordinatesInLargeInputs) {

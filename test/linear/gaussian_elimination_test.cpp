@@ -41,14 +41,14 @@ TYPED_TEST(EliminationScalars, StableMethodsHaveBackwardErrorOfOrderNU) {
     const Dense_matrix<S> a = from_rational_matrix<S>(to_rational_matrix(s.a));
     const Dense_vector<S> b = from_rational_vector<S>(to_rational_vector(s.b));
     const Linear_reference ref(a, b);
-    const double u = Scalar_traits<S>::unit_roundoff;
+    const double u = Number_traits<S>::unit_roundoff;
     for (Linear_solver m : all_linear_solvers) {
-      if (m == Linear_solver::ge_no_pivoting && !Scalar_traits<S>::is_exact) continue;  // unstable here
+      if (m == Linear_solver::ge_no_pivoting && !Number_traits<S>::is_exact) continue;  // unstable here
       if (m == Linear_solver::eigen_full_piv_lu && !std::is_constructible_v<S, Eigen::Index>) continue;
       const Dense_vector<S> x = solve_linear_system<S>(a, b, m);
       const auto e = measure_solution(ref, x);
       ASSERT_TRUE(e.finite);
-      if constexpr (Scalar_traits<S>::is_exact) {
+      if constexpr (Number_traits<S>::is_exact) {
         EXPECT_EQ(e.residual_norm, 0.0) << to_string(m);
         EXPECT_EQ(*e.forward_error, 0.0) << to_string(m);
       } else {
@@ -76,11 +76,11 @@ TYPED_TEST(EliminationScalars, ExactlySingularMatrices) {
     try {
       (void)gaussian_elimination<S>(as, bs, p);
       // A rounding scalar may miss the exact zero (then the solution is huge).
-      EXPECT_FALSE(Scalar_traits<S>::is_exact) << "exactly singular matrix accepted";
+      EXPECT_FALSE(Number_traits<S>::is_exact) << "exactly singular matrix accepted";
     } catch (const Singular_matrix& e) {
-      EXPECT_EQ(e.exactly_singular(), Scalar_traits<S>::is_exact);
-      EXPECT_EQ(e.code(), Scalar_traits<S>::is_exact ? Error_code::invalid_input : Error_code::computation_failure);
-      if (Scalar_traits<S>::is_exact) {
+      EXPECT_EQ(e.exactly_singular(), Number_traits<S>::is_exact);
+      EXPECT_EQ(e.code(), Number_traits<S>::is_exact ? Error_code::invalid_input : Error_code::computation_failure);
+      if (Number_traits<S>::is_exact) {
         EXPECT_EQ(e.step(), 2u) << "rank 2";
       }
       EXPECT_NE(std::string(e.what()).find("zero pivot"), std::string::npos) << e.what();

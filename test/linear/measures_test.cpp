@@ -25,9 +25,9 @@ TEST(Measures, ExactResidualOfAOneUlpError) {
   EXPECT_EQ(e.residual_norm, 0x1p-52);
   const mpq_class eps = mpq_class(1) / mpq_class(mpz_class(1) << 52);
   const mpq_class eta = eps / (2 + eps);
-  EXPECT_EQ(e.normwise_backward_error, internal::rational_up(eta));
+  EXPECT_EQ(e.normwise_backward_error, round_rational<double>(eta, Rounding::upward));
   EXPECT_GE(mpq_class(e.normwise_backward_error), eta);  // rounded upward
-  EXPECT_EQ(e.componentwise_backward_error, internal::rational_up(eps / (2 + eps)));
+  EXPECT_EQ(e.componentwise_backward_error, round_rational<double>(eps / (2 + eps), Rounding::upward));
   EXPECT_EQ(*e.forward_error, 0x1p-52);
 }
 
@@ -113,20 +113,20 @@ TEST(Measures, EstimatedConditionNumberBracketsTheExactOne) {
 
 TEST(Measures, ScalarConversionsAreExactAndCorrectlyRounded) {
   const mpq_class third(1, 3);
-  EXPECT_EQ(Scalar_traits<double>::from_rational(third), 1.0 / 3.0);
-  EXPECT_EQ(Scalar_traits<float>::from_rational(third), 1.0f / 3.0f);
-  EXPECT_EQ(Scalar_traits<long double>::from_rational(third), 1.0L / 3.0L);
-  EXPECT_EQ(Scalar_traits<double>::to_rational(0.1), mpq_class(3602879701896397, 36028797018963968));
+  EXPECT_EQ(Number_traits<double>::from_rational(third), 1.0 / 3.0);
+  EXPECT_EQ(Number_traits<float>::from_rational(third), 1.0f / 3.0f);
+  EXPECT_EQ(Number_traits<long double>::from_rational(third), 1.0L / 3.0L);
+  EXPECT_EQ(Number_traits<double>::to_rational(0.1), mpq_class(3602879701896397, 36028797018963968));
   // subnormals and the largest long double survive the round trip
   for (double v : {4.9406564584124654e-324, -2.2250738585072014e-308, 1.7976931348623157e308, 0.0})
-    EXPECT_EQ(Scalar_traits<double>::from_rational(Scalar_traits<double>::to_rational(v)), v);
+    EXPECT_EQ(Number_traits<double>::from_rational(Number_traits<double>::to_rational(v)), v);
   const long double big = std::numeric_limits<long double>::max();
-  EXPECT_EQ(Scalar_traits<long double>::from_rational(Scalar_traits<long double>::to_rational(big)), big);
+  EXPECT_EQ(Number_traits<long double>::from_rational(Number_traits<long double>::to_rational(big)), big);
   using M = Mpfr_number<200>;
-  const M m = Scalar_traits<M>::from_rational(third);
-  const mpq_class back = Scalar_traits<M>::to_rational(m);
+  const M m = Number_traits<M>::from_rational(third);
+  const mpq_class back = Number_traits<M>::to_rational(m);
   EXPECT_LT(abs(back - third), mpq_class(1) / (mpq_class(mpz_class(1) << 200)));
-  EXPECT_THROW((void)Scalar_traits<double>::to_rational(std::nan("")), Non_finite_input);
+  EXPECT_THROW((void)Number_traits<double>::to_rational(std::nan("")), Non_finite_input);
   // Eigen sees the MPFR type's epsilon
   EXPECT_EQ(Eigen::NumTraits<Mpfr_number<64>>::epsilon().to_double(), 0x1p-63);
   EXPECT_EQ(Eigen::NumTraits<mpq_class>::epsilon(), 0);

@@ -1,13 +1,14 @@
 # check_tool_run.cmake — runs the relgeo tool once and checks the contract:
 #   cmake -DTOOL=... -DARGS=a;b;c -DEXPECT_CODE=N [-DSTDOUT_MATCHES=re1;re2]
 #         [-DSTDOUT_REJECTS=re1;re2] [-DFILES=f1;f2] [-DJSON_FILES=f1;f2]
-#         [-DSTDOUT_JSON=ON] [-DSTDIN=file] -P check_tool_run.cmake
+#         [-DSTDOUT_JSON=ON] [-DSTDIN=file] [-DWORKDIR=dir] -P check_tool_run.cmake
 # Fails unless the exit code is EXPECT_CODE, stdout matches every regex of
 # STDOUT_MATCHES and none of STDOUT_REJECTS,
 # every file in FILES exists (removed first), every file in JSON_FILES and,
 # with STDOUT_JSON, stdout parse as JSON. For exit code 2, stderr must be
 # exactly one line starting with "relgeo: error: ". STDIN: a file fed to the
-# tool's standard input. Lists are joined with "@@".
+# tool's standard input; WORKDIR: the folder it runs in (created). Lists are
+# joined with "@@".
 foreach(v ARGS STDOUT_MATCHES STDOUT_REJECTS FILES JSON_FILES)
   string(REPLACE "@@" ";" ${v} "${${v}}")
 endforeach()
@@ -20,7 +21,12 @@ set(_stdin)
 if(STDIN)
   set(_stdin INPUT_FILE "${STDIN}")
 endif()
-execute_process(COMMAND "${TOOL}" ${ARGS} ${_stdin}
+set(_workdir)
+if(WORKDIR)
+  file(MAKE_DIRECTORY "${WORKDIR}")
+  set(_workdir WORKING_DIRECTORY "${WORKDIR}")
+endif()
+execute_process(COMMAND "${TOOL}" ${ARGS} ${_stdin} ${_workdir}
   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT code STREQUAL "${EXPECT_CODE}")
   message(FATAL_ERROR "relgeo ${ARGS}: exit code ${code}, expected ${EXPECT_CODE}\nstdout:\n${out}\nstderr:\n${err}")

@@ -63,6 +63,10 @@ relgeo_tool_test(linsolve_bad_scalar 2 ARGS linsolve --example thesis --scalar m
 relgeo_tool_test(linsolve_bad_example 2 ARGS linsolve --example nonsense)
 relgeo_tool_test(linsolve_hilbert_zero 2 ARGS linsolve --hilbert 0)
 relgeo_tool_test(linsolve_eigen_full_mpfr 2 ARGS linsolve --example thesis --method eigen-full --scalar mpfr-53)
+# The matrix file positionally, defaults --method partial --scalar double.
+relgeo_tool_test(linsolve_positional_defaults 0 STDOUT_JSON ARGS linsolve ${_ld}/linsolve_3x3.txt --format json
+  STDOUT_MATCHES "\"method\": \"partial\"," "\"scalar\": \"double\"," "\"n\": 3,")
+relgeo_tool_test(linsolve_input_twice 2 ARGS linsolve ${_ld}/linsolve_3x3.txt --input ${_ld}/linsolve_3x3.txt)
 
 # ---- extrusion ---------------------------------------------------------------------
 relgeo_tool_test(help_extrusion 0 ARGS help extrusion
@@ -113,6 +117,11 @@ relgeo_tool_test(extrusion_off_plane 2 ARGS extrusion --input ${_ld}/extrusion_o
 relgeo_tool_test(extrusion_off_plane_tolerated 0 STDOUT_JSON
   ARGS extrusion --input ${_ld}/extrusion_off_plane.json --absolute-uncertainty 0.6 --format json
   STDOUT_MATCHES "\"plane_heights\": \\[0, 0.5\\]," "\"absolute\": 0.6")
+# The contour positionally, defaults --kernel failsafe --algorithm graham-fortune.
+relgeo_tool_test(extrusion_positional_defaults 0 ARGS extrusion ${_ld}/extrusion_circle16.json
+  STDOUT_MATCHES "verdict +certified" "kernel +failsafe, algorithm graham-fortune")
+# A number beyond double's range in the JSON: bad input (exit 2), not an internal error.
+relgeo_tool_test(extrusion_overflow 2 ARGS extrusion ${_ld}/extrusion_overflow.json)
 relgeo_tool_test(extrusion_no_direction 2 ARGS extrusion --input ${_ld}/extrusion_no_direction.json)
 relgeo_tool_test(extrusion_not_json 2 ARGS extrusion --input ${_ld}/linsolve_3x3.txt)
 relgeo_tool_test(extrusion_missing_file 2 ARGS extrusion --input ${_ld}/no_such_file.json)

@@ -33,6 +33,17 @@ relgeo_tool_test(subdivide_blz_failsafe 0
   ARGS subdivide --levels 1 --rules blz --kernel failsafe --input ${_sd}/creased_box.off --tags ${_sd}/creased_box.tags
        --output ${_tmp}/box_blz.ply
   STDOUT_MATCHES "failsafe<double>" "blz")
+# Defaults (--levels 1, kernel double) with the mesh files positionally ...
+relgeo_tool_test(subdivide_positional 0
+  ARGS subdivide ${_sd}/creased_box.off ${_tmp}/box_positional.obj
+  STDOUT_MATCHES "kernel +double" "hoppe, 1 level" "96 faces -> .*box_positional.obj" "status +ok"
+  FILES ${_tmp}/box_positional.obj)
+# ... and without an output file: INPUT_L<K>.off in the current folder.
+relgeo_tool_test(subdivide_default_output 0 WORKDIR ${_tmp}/subdivide_default
+  ARGS subdivide ${_sd}/creased_box.off --levels 2 --limit --samples 0
+  STDOUT_MATCHES "384 faces -> creased_box_L2_limit.off"
+  FILES ${_tmp}/subdivide_default/creased_box_L2_limit.off)
+relgeo_tool_test(subdivide_no_input 2 ARGS subdivide --levels 1)
 relgeo_tool_test(subdivide_nonmanifold 2 ARGS subdivide --levels 1 --input ${_sd}/nonmanifold_edge.off --output ${_tmp}/x.off)
 relgeo_tool_test(subdivide_garbage 2 ARGS subdivide --levels 1 --input ${_sd}/garbage.off --output ${_tmp}/x.off)
 relgeo_tool_test(subdivide_missing 2 ARGS subdivide --levels 1 --input ${_sd}/no_such_mesh.off --output ${_tmp}/x.off)

@@ -3,6 +3,7 @@
 // carrying the extrusion direction d to the z axis for 3D input.
 #pragma once
 
+#include <gmpxx.h>
 #include <mpfr.h>
 
 #include <algorithm>
@@ -15,46 +16,14 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/core/fp_environment.h"
+#include "relgeo/core/mpfr_number.h"
+#include "relgeo/core/number_traits.h"
+#include "relgeo/core/rounding.h"
 #include "relgeo/curves/bezier_curve.h"
 #include "relgeo/kernel/point.h"
 
 namespace relgeo {
-
-namespace internal {
-
-/// sqrt(x^2 + y^2 (+ z^2)) rounded upward. In double with a relative margin
-/// of 2^-50 when every nonzero |component| lies in [2^-500, 2^500] (the
-/// evaluation has at most 4 roundings, relative error < 2.5 u, no underflow or
-/// overflow); otherwise in MPFR with exact squares.
-inline double norm_up(double x, double y, double z = 0) {
-  const auto in_range = [](double v) { return v == 0 || (std::abs(v) >= 0x1p-500 && std::abs(v) <= 0x1p500); };
-  if (in_range(x) && in_range(y) && in_range(z)) {
-    const double r = std::sqrt(x * x + y * y + z * z);
-    return r * (1 + 0x1p-50);
-  }
-  mpfr_t s, t;
-  mpfr_inits2(2200, s, t, static_cast<mpfr_ptr>(nullptr));  // 2200 bits: squares and sums of doubles are exact
-  mpfr_set_d(s, x, MPFR_RNDN), mpfr_sqr(s, s, MPFR_RNDN);
-  mpfr_set_d(t, y, MPFR_RNDN), mpfr_sqr(t, t, MPFR_RNDN), mpfr_add(s, s, t, MPFR_RNDN);
-  mpfr_set_d(t, z, MPFR_RNDN), mpfr_sqr(t, t, MPFR_RNDN), mpfr_add(s, s, t, MPFR_RNDN);
-  mpfr_sqrt(s, s, MPFR_RNDU);
-  const double r = mpfr_get_d(s, MPFR_RNDU);
-  mpfr_clears(s, t, static_cast<mpfr_ptr>(nullptr));
-  return r;
-}
-
-/// Upward-rounded a + b and a * b for nonnegative doubles (round to nearest,
-/// then one step up: an upper bound of the exact result).
-inline double add_up(double a, double b) {
-  const double r = a + b;
-  return r == 0 ? 0.0 : std::nextafter(r, std::numeric_limits<double>::infinity());
-}
-inline double mul_up(double a, double b) {
-  const double r = a * b;
-  return r == 0 ? 0.0 : std::nextafter(r, std::numeric_limits<double>::infinity());
-}
-
-}  // namespace internal
 
 /// \brief A closed contour of M >= 1 planar Bezier curves R^0..R^{M-1} with
 /// R^m_v = R^{m+1}_0 (indices mod M), as the thesis' extruded objects use.
@@ -139,7 +108,7 @@ class Bezier_contour {
   void default_scales() {
     scales_.assign(curves_.size(), {});
     for (std::size_t m = 0; m < curves_.size(); ++m)
-      for (const auto& p : curves_[m].control_points()) scales_[m].push_back(internal::norm_up(p.x, p.y));
+      for (const auto& p : curves_[m].control_points()) scales_[m].push_back(norm_up(p.x, p.y));
   }
   std::vector<Bezier_curve_2<double>> curves_;
   std::vector<std::vector<double>> scales_;
@@ -191,11 +160,15 @@ struct Plane_projection {
 /// extruded object is defined by the projection x - (d . x) d).
 /// \throws Invalid_input (d zero or not finite), Non_finite_input (a point).
 inline Plane_projection project_along(std::span<const Point_3<double>> points, const Point_3<double>& d) {
+  // The images and their error bound are computed in round to nearest
+  // without FTZ/DAZ, whatever the caller's environment (the bound's directed
+  // roundings assume it).
+  const Default_fp_environment environment;
   if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z))
     throw Non_finite_input("extrusion direction: NaN or infinite component");
   const double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
   if (!(len > 0) || !std::isfinite(len)) throw Invalid_input("extrusion direction: the zero vector (or out of range)");
-  for (std::size_t i = 0; i < points.size(); ++i)  // before any MPFR allocation below
+  for (std::size_t i = 0; i < points.size(); ++i)
     if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y) || !std::isfinite(points[i].z))
       throw Non_finite_input("contour point " + std::to_string(i) + " has a NaN or infinite coordinate");
   Plane_projection p;
@@ -203,36 +176,30 @@ inline Plane_projection project_along(std::span<const Point_3<double>> points, c
   p.rotation = rotation_to_z(p.direction);
   const Matrix_3& q = p.rotation;
 
-  // The 256-bit reference rotation, from the exact unit vector d / ||d||.
-  constexpr mpfr_prec_t prec = 256;
-  mpfr_t dx, dy, dz, n, c, f, t, u, ref[3][2];
-  mpfr_inits2(prec, dx, dy, dz, n, c, f, t, u, static_cast<mpfr_ptr>(nullptr));
-  for (auto& row : ref) mpfr_inits2(prec, row[0], row[1], static_cast<mpfr_ptr>(nullptr));
-  mpfr_set_d(dx, d.x, MPFR_RNDN), mpfr_set_d(dy, d.y, MPFR_RNDN), mpfr_set_d(dz, d.z, MPFR_RNDN);
-  mpfr_sqr(n, dx, MPFR_RNDN), mpfr_fma(n, dy, dy, n, MPFR_RNDN), mpfr_fma(n, dz, dz, n, MPFR_RNDN);
-  mpfr_sqrt(n, n, MPFR_RNDN);
-  mpfr_div(dx, dx, n, MPFR_RNDN), mpfr_div(dy, dy, n, MPFR_RNDN), mpfr_div(dz, dz, n, MPFR_RNDN);
-  const bool flip = mpfr_sgn(dz) < 0;
-  if (flip) mpfr_neg(dy, dy, MPFR_RNDN), mpfr_neg(dz, dz, MPFR_RNDN);
-  mpfr_set(c, dz, MPFR_RNDN);
-  mpfr_add_ui(f, c, 1, MPFR_RNDN), mpfr_ui_div(f, 1, f, MPFR_RNDN);
-  // rows 0 and 1 of R (row 2 is dropped): kx = y, ky = -x
-  // R00 = c + y^2 f, R01 = -x y f, R02 = -x; R10 = -x y f, R11 = c + x^2 f, R12 = -y
-  mpfr_sqr(t, dy, MPFR_RNDN), mpfr_mul(t, t, f, MPFR_RNDN), mpfr_add(ref[0][0], c, t, MPFR_RNDN);
-  mpfr_mul(t, dx, dy, MPFR_RNDN), mpfr_mul(t, t, f, MPFR_RNDN), mpfr_neg(ref[0][1], t, MPFR_RNDN);
-  mpfr_sqr(t, dx, MPFR_RNDN), mpfr_mul(t, t, f, MPFR_RNDN), mpfr_add(ref[1][1], c, t, MPFR_RNDN);
-  mpfr_set(ref[1][0], ref[0][1], MPFR_RNDN);
-  mpfr_t r02, r12;
-  mpfr_inits2(prec, r02, r12, static_cast<mpfr_ptr>(nullptr));
-  mpfr_neg(r02, dx, MPFR_RNDN), mpfr_neg(r12, dy, MPFR_RNDN);
-  if (flip) {
-    mpfr_neg(ref[0][1], ref[0][1], MPFR_RNDN), mpfr_neg(ref[1][1], ref[1][1], MPFR_RNDN);
-    mpfr_neg(r02, r02, MPFR_RNDN), mpfr_neg(r12, r12, MPFR_RNDN);
-  }
+  // The 256-bit reference rotation (rows 0 and 1; row 2 is dropped), from
+  // the exact unit vector d / ||d||, by the formula of rotation_to_z.
+  using Reference = Mpfr_number<256>;
+  Reference dx(d.x), dy(d.y), dz(d.z);  // exact
+  Reference n = dx * dx;
+  mpfr_fma(n.get(), dy.get(), dy.get(), n.get(), MPFR_RNDN);
+  mpfr_fma(n.get(), dz.get(), dz.get(), n.get(), MPFR_RNDN);
+  n = sqrt(n);
+  dx /= n, dy /= n, dz /= n;
+  const bool flip = dz.sign() < 0;
+  if (flip) dy = -dy, dz = -dz;
+  const Reference& c = dz;
+  const Reference f = Reference(1) / (c + Reference(1));
+  // kx = y, ky = -x: R00 = c + y^2 f, R01 = R10 = -x y f, R02 = -x;
+  // R11 = c + x^2 f, R12 = -y; with the flip, columns 1 and 2 negated.
+  Reference ref[2][3] = {{c + dy * dy * f, -(dx * dy * f), -dx}, {Reference(0), c + dx * dx * f, -dy}};
+  ref[1][0] = ref[0][1];
+  if (flip)
+    for (auto& row : ref) row[1] = -row[1], row[2] = -row[2];
 
   double worst = 0, max_norm = 0;
   p.height_min = std::numeric_limits<double>::infinity();
   p.height_max = -std::numeric_limits<double>::infinity();
+  Reference t, u;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point_3<double>& x = points[i];
     const double px = q[0][0] * x.x + q[0][1] * x.y + q[0][2] * x.z;
@@ -240,26 +207,24 @@ inline Plane_projection project_along(std::span<const Point_3<double>> points, c
     const double h = p.direction.x * x.x + p.direction.y * x.y + p.direction.z * x.z;
     p.height_min = std::min(p.height_min, h), p.height_max = std::max(p.height_max, h);
     p.points.push_back({px, py});
-    p.norms.push_back(internal::norm_up(x.x, x.y, x.z));
+    p.norms.push_back(norm_up(x.x, x.y, x.z));
     max_norm = std::max(max_norm, p.norms.back());
     // reference image and the distance to the double one
     double e2 = 0;
     for (int row = 0; row < 2; ++row) {
-      mpfr_mul_d(t, ref[row][0], x.x, MPFR_RNDN);
-      mpfr_mul_d(u, ref[row][1], x.y, MPFR_RNDN), mpfr_add(t, t, u, MPFR_RNDN);
-      mpfr_mul_d(u, row == 0 ? r02 : r12, x.z, MPFR_RNDN), mpfr_add(t, t, u, MPFR_RNDN);
-      mpfr_sub_d(t, t, row == 0 ? px : py, MPFR_RNDN);
-      mpfr_abs(t, t, MPFR_RNDN);
-      const double di = mpfr_get_d(t, MPFR_RNDU);
+      mpfr_mul_d(t.get(), ref[row][0].get(), x.x, MPFR_RNDN);
+      mpfr_mul_d(u.get(), ref[row][1].get(), x.y, MPFR_RNDN), mpfr_add(t.get(), t.get(), u.get(), MPFR_RNDN);
+      mpfr_mul_d(u.get(), ref[row][2].get(), x.z, MPFR_RNDN), mpfr_add(t.get(), t.get(), u.get(), MPFR_RNDN);
+      mpfr_sub_d(t.get(), t.get(), row == 0 ? px : py, MPFR_RNDN);
+      mpfr_abs(t.get(), t.get(), MPFR_RNDN);
+      const double di = upper_double(t);
       e2 += di * di;
     }
     worst = std::max(worst, std::sqrt(e2));
   }
   // Margins: this evaluation's own rounding (relative 2^-50 is ample) and the
   // 256-bit reference's error (relative 2^-240 of ||x||).
-  p.rotation_error = internal::add_up(worst * (1 + 0x1p-50), max_norm * 0x1p-240);
-  mpfr_clears(dx, dy, dz, n, c, f, t, u, r02, r12, static_cast<mpfr_ptr>(nullptr));
-  for (auto& row : ref) mpfr_clears(row[0], row[1], static_cast<mpfr_ptr>(nullptr));
+  p.rotation_error = add_up(worst * (1 + 0x1p-50), max_norm * 0x1p-240);
   return p;
 }
 

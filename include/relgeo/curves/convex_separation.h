@@ -4,7 +4,6 @@
 #pragma once
 
 #include <gmpxx.h>
-#include <mpfr.h>
 
 #include <algorithm>
 #include <array>
@@ -15,27 +14,13 @@
 #include <span>
 #include <vector>
 
+#include "relgeo/core/dyadic.h"
+#include "relgeo/core/rounding.h"
 #include "relgeo/error/convex_polygon.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/kernel/point.h"
 
 namespace relgeo {
-
-/// sqrt(q) for a rational q >= 0, rounded toward -inf (`sqrt_down`) or +inf
-/// (`sqrt_up`) to a double: the square and the root are rounded in the same
-/// direction in 128-bit MPFR, then once more to double, so the result is a
-/// true lower (upper) bound.
-inline double sqrt_rounded(const mpq_class& q, mpfr_rnd_t dir) {
-  mpfr_t v;
-  mpfr_init2(v, 128);
-  mpfr_set_q(v, q.get_mpq_t(), dir);
-  mpfr_sqrt(v, v, dir);
-  const double d = mpfr_get_d(v, dir);
-  mpfr_clear(v);
-  return d;
-}
-inline double sqrt_down(const mpq_class& q) { return sqrt_rounded(q, MPFR_RNDD); }
-inline double sqrt_up(const mpq_class& q) { return sqrt_rounded(q, MPFR_RNDU); }
 
 /// A signed distance, exact: `side` +1 (apart), 0 (touching) or -1
 /// (overlapping); `squared` is the squared distance when apart and the
@@ -47,14 +32,14 @@ struct Signed_distance {
   /// The signed value rounded toward -inf: never larger than the exact one
   /// (a margin must never be overstated).
   double lower() const {
-    if (side > 0) return sqrt_down(squared);
-    if (side < 0) return -sqrt_up(squared);
+    if (side > 0) return sqrt_rational(squared, Rounding::downward);
+    if (side < 0) return -sqrt_rational(squared, Rounding::upward);
     return 0.0;
   }
   /// The signed value rounded toward +inf.
   double upper() const {
-    if (side > 0) return sqrt_up(squared);
-    if (side < 0) return -sqrt_down(squared);
+    if (side > 0) return sqrt_rational(squared, Rounding::upward);
+    if (side < 0) return -sqrt_rational(squared, Rounding::downward);
     return 0.0;
   }
 };
@@ -113,25 +98,18 @@ class Scaled_squared_distances {
     bool any = false;
     for (const auto& p : points)
       for (double v : {p.x, p.y}) {
-        if (v == 0) continue;
-        int e = 0;
-        std::frexp(v, &e);
-        const int low = e - 53;
-        emin_ = any ? std::min(emin_, low) : low;
+        const Binary_parts b = binary_parts(v);  // v = mantissa 2^exponent
+        if (b.mantissa == 0) continue;
+        emin_ = any ? std::min(emin_, b.exponent) : b.exponent;
         any = true;
       }
   }
   /// v * 2^-emin as an integer. \pre v is one of the coordinates given (or 0).
   void load(mpz_class& z, double v) const {
-    if (v == 0) {
-      z = 0;
-      return;
-    }
-    int e = 0;
-    const double m = std::frexp(v, &e);  // v = m 2^e, m has 53 bits
-    mpz_set_d(z.get_mpz_t(), std::ldexp(m, 53));
-    const long shift = static_cast<long>(e) - 53 - emin_;
-    if (shift > 0) mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+    const Binary_parts b = binary_parts(v);
+    set_mpz(z.get_mpz_t(), b.mantissa);
+    if (b.mantissa != 0 && b.exponent > emin_)
+      mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), static_cast<mp_bitcnt_t>(b.exponent - emin_));
   }
   /// Squared distance from p to segment ab as num / den (in units of 2^(2 emin)).
   void squared_distance_to_segment(const Point_2<double>& p, const Point_2<double>& a, const Point_2<double>& b,
@@ -210,13 +188,6 @@ mpq_class min_squared_distance(const Point_2<double>& p, const Segments& segment
   return exact.value(best_num, best_den);
 }
 
-inline double max_abs_coordinate(std::span<const Point_2<double>> a, std::span<const Point_2<double>> b = {}) {
-  double c = 0;
-  for (const auto& v : a) c = std::max({c, std::abs(v.x), std::abs(v.y)});
-  for (const auto& v : b) c = std::max({c, std::abs(v.x), std::abs(v.y)});
-  return c;
-}
-
 /// Squared penetration depth of two intersecting convex polygons (strictly
 /// convex CCW vertex lists): the smallest overlap of their projections over
 /// the edge normals of both (the edges of the Minkowski difference A - B are
@@ -273,7 +244,7 @@ inline Signed_distance signed_distance_to_hull(std::span<const Point_2<double>> 
       std::vector<std::pair<Point_2<double>, Point_2<double>>> edges;
       for (std::size_t i = 0; i < h.size(); ++i) edges.emplace_back(h[i], h[(i + 1) % h.size()]);
       const Point_2<double> pp[1] = {p};
-      r.squared = internal::min_squared_distance(p, edges, internal::max_abs_coordinate(h, pp));
+      r.squared = internal::min_squared_distance(p, edges, std::max(coordinate_bound(h), coordinate_bound(pp)));
       return r;
     }
     case Polygon_side::boundary:
@@ -350,7 +321,7 @@ inline Signed_distance separation_of_hulls(std::span<const Point_2<double>> ha, 
   }
   // The distance between disjoint convex polygons is attained between a
   // vertex of one and an edge (or vertex) of the other.
-  const double C = internal::max_abs_coordinate(ha, hb);
+  const double C = std::max(coordinate_bound(ha), coordinate_bound(hb));
   std::optional<mpq_class> best;
   auto vertex_to_edges = [&](std::span<const Point_2<double>> p, std::span<const Point_2<double>> poly) {
     std::vector<std::pair<Point_2<double>, Point_2<double>>> edges;

@@ -89,8 +89,9 @@
 #include <string_view>
 #include <vector>
 
-#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/errors.h"
+#include "relgeo/core/fp_environment.h"
+#include "relgeo/core/rounding.h"
 #include "relgeo/curves/contour.h"
 #include "relgeo/curves/convex_separation.h"
 #include "relgeo/error/hull_backward_error.h"
@@ -292,6 +293,231 @@ inline Extrusion_verdict decide(double margin_lower, double margin_upper, double
   return Extrusion_verdict::uncertain;
 }
 
+/// The steps of check_extrusion, sharing the contour, the options, the
+/// kernel and hull algorithm, and the report being filled: one member per
+/// condition, and the bookkeeping of each hull problem.
+template <class K, class Algorithm>
+class Extrusion_check {
+ public:
+  Extrusion_check(const Bezier_contour& contour, const Extrusion_options& options, const K& k,
+                  const Algorithm& hull)
+      : contour_(contour), options_(options), k_(k), hull_(hull), M_(contour.size()),
+        rho2_(mul_up(2.0, options.rotation_error)) {  // a difference or a pair moves by 2 rho
+    rep_.curves = M_;
+    rep_.rotation_error = options.rotation_error;
+    for (int c = 0; c < 3; ++c) rep_.conditions[c].condition = static_cast<Extrusion_condition>(c + 1);
+  }
+
+  /// Condition 1: q = { R_{i+1} - R_i } of each curve.
+  void no_self_intersection() {
+    for (std::size_t m = 0; m < M_; ++m) {
+      const auto& c = contour_[m];
+      Hull_problem_input in;
+      for (std::size_t i = 0; i < c.degree(); ++i) {
+        in.points.push_back({c[i + 1].x - c[i].x, c[i + 1].y - c[i].y});
+        in.uncertainty = std::max(in.uncertainty, add_up(eps(m, i + 1), eps(m, i)));
+      }
+      in.rounding = difference_rounding(in.points);
+      origin_problem(Extrusion_condition::no_self_intersection, "q", m, m, in);
+    }
+  }
+
+  /// Condition 2: Q' and Q'' of each adjacent pair (m, m+1).
+  void adjacent_curves() {
+    for (std::size_t m = 0; m < M_; ++m) {
+      const std::size_t n = (m + 1) % M_;
+      const auto& a = contour_[m];  // R^m, ends at P
+      const auto& b = contour_[n];  // R^{m+1}, starts at P
+      Hull_problem_input q1, q2;
+      // Q' = { R^{m+1}_{i+1} - R^m_j : i < v_{m+1}, j <= v_m }
+      for (std::size_t i = 0; i < b.degree(); ++i)
+        for (std::size_t j = 0; j <= a.degree(); ++j) {
+          q1.points.push_back({b[i + 1].x - a[j].x, b[i + 1].y - a[j].y});
+          q1.uncertainty = std::max(q1.uncertainty, add_up(eps(n, i + 1), eps(m, j)));
+        }
+      // Q'' = { R^{m+1}_j - R^m_i : i < v_m, j <= v_{m+1} }   (R~^m_{i'+1} = R^m_{v-1-i'})
+      for (std::size_t i = 0; i < a.degree(); ++i)
+        for (std::size_t j = 0; j <= b.degree(); ++j) {
+          q2.points.push_back({b[j].x - a[i].x, b[j].y - a[i].y});
+          q2.uncertainty = std::max(q2.uncertainty, add_up(eps(n, j), eps(m, i)));
+        }
+      q1.rounding = difference_rounding(q1.points);
+      q2.rounding = difference_rounding(q2.points);
+      origin_problem(Extrusion_condition::adjacent_curves, "Q'", m, n, q1);
+      origin_problem(Extrusion_condition::adjacent_curves, "Q''", m, n, q2);
+    }
+  }
+
+  /// Condition 3: the control hulls of each non-adjacent pair, all pairs or
+  /// those the spatial prune cannot certify by their bounding boxes.
+  void disjoint_curves() {
+    if (M_ < 4) return;
+    rep_.non_adjacent_pairs = M_ * (M_ - 3) / 2;
+    control_hulls();
+    if (options_.prune) pairs_near_in_boxes();
+    else all_pairs();
+  }
+
+  /// The verdicts of the conditions and of the contour, and the list of the
+  /// problems not certified, smallest slack first.
+  Extrusion_report report() && {
+    rep_.verdict = Extrusion_verdict::certified;
+    for (auto& s : rep_.conditions) {
+      s.verdict = s.refused ? Extrusion_verdict::refused
+                  : s.uncertain ? Extrusion_verdict::uncertain
+                                : Extrusion_verdict::certified;
+      if (s.verdict == Extrusion_verdict::refused) rep_.verdict = Extrusion_verdict::refused;
+      else if (s.verdict == Extrusion_verdict::uncertain && rep_.verdict == Extrusion_verdict::certified)
+        rep_.verdict = Extrusion_verdict::uncertain;
+    }
+    std::sort(not_certified_.begin(), not_certified_.end(),
+              [](const Extrusion_problem& x, const Extrusion_problem& y) { return x.slack() < y.slack(); });
+    rep_.offending_total = not_certified_.size();
+    if (not_certified_.size() > options_.max_listed) not_certified_.resize(options_.max_listed);
+    rep_.offending = std::move(not_certified_);
+    return std::move(rep_);
+  }
+
+ private:
+  struct Box {
+    double xmin, ymin, xmax, ymax;
+  };
+
+  /// The bound of the perturbation of control point i of curve m.
+  double eps(std::size_t m, std::size_t i) const {
+    return add_up(mul_up(options_.relative_uncertainty, contour_.scale(m, i)), options_.absolute_uncertainty);
+  }
+
+  /// Counts a decided problem in its condition's summary.
+  void record(const Extrusion_problem& p) {
+    auto& s = rep_.conditions[static_cast<int>(p.condition) - 1];
+    ++s.problems;
+    s.min_margin = std::min(s.min_margin, p.margin);
+    if (!s.worst || p.slack() < s.worst->slack()) s.worst = p;
+    switch (p.verdict) {
+      case Extrusion_verdict::certified: ++s.certified; break;
+      case Extrusion_verdict::uncertain: ++s.uncertain; break;
+      case Extrusion_verdict::refused: ++s.refused; break;
+    }
+    if (p.verdict != Extrusion_verdict::certified) not_certified_.push_back(p);
+  }
+
+  /// A problem on a difference set: margin = signed dist(0, conv(computed hull)).
+  void origin_problem(Extrusion_condition cond, std::string_view set, std::size_t a, std::size_t b,
+                      const Hull_problem_input& in) {
+    const Computed_hull h = run_hull(std::span<const Point_2<double>>(in.points), k_, hull_, rep_);
+    const Signed_distance d = signed_distance_to_hull(h.vertices, Point_2<double>{0.0, 0.0});
+    Extrusion_problem p;
+    p.condition = cond, p.set = set, p.curve_a = a, p.curve_b = b;
+    p.margin = d.lower();
+    p.uncertainty = in.uncertainty;
+    const double data_error = add_up(in.rounding, rho2_);
+    p.computation_error = add_up(data_error, h.backward);
+    p.verdict = decide(p.margin, d.upper(), p.uncertainty, p.computation_error, data_error);
+    record(p);
+  }
+
+  /// The computed hull of each curve's control points, its exact hull, the
+  /// largest uncertainty of its points and its bounding box.
+  void control_hulls() {
+    eps_max_.assign(M_, 0.0);
+    boxes_.resize(M_);
+    for (std::size_t m = 0; m < M_; ++m) {
+      const auto pts = contour_[m].control_points();
+      hulls_.push_back(run_hull(pts, k_, hull_, rep_));
+      exact_hulls_.push_back(exact_hull(hulls_.back().vertices));
+      Box bx{pts[0].x, pts[0].y, pts[0].x, pts[0].y};
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        eps_max_[m] = std::max(eps_max_[m], eps(m, i));
+        bx.xmin = std::min(bx.xmin, pts[i].x), bx.xmax = std::max(bx.xmax, pts[i].x);
+        bx.ymin = std::min(bx.ymin, pts[i].y), bx.ymax = std::max(bx.ymax, pts[i].y);
+      }
+      boxes_[m] = bx;
+    }
+  }
+
+  bool adjacent(std::size_t a, std::size_t b) const { return a == b || (a + 1) % M_ == b || (b + 1) % M_ == a; }
+
+  /// The separation problem of curves a < b.
+  void pair_problem(std::size_t a, std::size_t b) {
+    const Signed_distance d = separation_of_hulls(exact_hulls_[a], exact_hulls_[b]);
+    Extrusion_problem p;
+    p.condition = Extrusion_condition::disjoint_curves, p.set = "hulls", p.curve_a = a, p.curve_b = b;
+    p.margin = d.lower();
+    p.uncertainty = add_up(eps_max_[a], eps_max_[b]);
+    p.computation_error = add_up(rho2_, add_up(hulls_[a].backward, hulls_[b].backward));
+    p.verdict = decide(p.margin, d.upper(), p.uncertainty, p.computation_error, rho2_);
+    ++rep_.pairs_computed;
+    record(p);
+  }
+
+  /// Without the prune: every non-adjacent pair, exactly.
+  void all_pairs() {
+    for (std::size_t a = 0; a < M_; ++a)
+      for (std::size_t b = a + 1; b < M_; ++b)
+        if (!adjacent(a, b)) pair_problem(a, b);
+  }
+
+  /// The prune radius: at least twice the largest pair requirement (so that
+  /// every pair farther apart is certified by its boxes alone), and at least
+  /// the median box diagonal (so that the margin reported is the real
+  /// smallest separation for contours of similar curves).
+  double prune_radius() const {
+    double need = 0;
+    for (double e : eps_max_) need = std::max(need, e);
+    need = add_up(add_up(need, need), rho2_);
+    std::vector<double> diag(M_);
+    for (std::size_t m = 0; m < M_; ++m)
+      diag[m] = std::hypot(boxes_[m].xmax - boxes_[m].xmin, boxes_[m].ymax - boxes_[m].ymin);
+    std::nth_element(diag.begin(), diag.begin() + static_cast<std::ptrdiff_t>(M_ / 2), diag.end());
+    return std::max(mul_up(2.0, need), diag[M_ / 2]);
+  }
+
+  /// With the prune: a sweep over the boxes sorted by x; pairs whose boxes
+  /// are farther apart than the radius on an axis are certified unseen.
+  void pairs_near_in_boxes() {
+    const double r = prune_radius();
+    rep_.prune_radius = r;
+    // Boxes whose axis gap exceeds r: the hulls are farther apart than r
+    // (the max of the axis gaps is at most the Euclidean distance of the
+    // boxes), so their pair is certified: r > uncertainty + 2 rho.
+    std::vector<std::size_t> order(M_);
+    for (std::size_t m = 0; m < M_; ++m) order[m] = m;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return boxes_[a].xmin < boxes_[b].xmin; });
+    for (std::size_t s = 0; s < M_; ++s) {
+      const std::size_t a = order[s];
+      const double reach = boxes_[a].xmax + r;
+      for (std::size_t t = s + 1; t < M_ && boxes_[order[t]].xmin <= reach; ++t) {
+        const std::size_t b = order[t];
+        if (adjacent(a, b)) continue;
+        if (boxes_[b].ymin > boxes_[a].ymax + r || boxes_[a].ymin > boxes_[b].ymax + r) continue;
+        pair_problem(std::min(a, b), std::max(a, b));
+      }
+    }
+    // The gap tests above are in double with r as computed; a pair skipped
+    // has a computed gap > r. Each gap is one subtraction, exact to half an
+    // ulp, and r >= 2 need, so the true gap exceeds need: certified.
+    auto& s3 = rep_.conditions[2];
+    s3.pruned = rep_.non_adjacent_pairs - rep_.pairs_computed;
+    const double r_lower = r * (1 - 0x1p-50);  // covers the rounding of the gap tests
+    if (s3.pruned > 0 && r_lower < s3.min_margin) s3.min_margin = r_lower, s3.min_margin_is_prune_bound = true;
+  }
+
+  const Bezier_contour& contour_;
+  const Extrusion_options& options_;
+  const K& k_;
+  const Algorithm& hull_;
+  const std::size_t M_;
+  const double rho2_;
+  Extrusion_report rep_;
+  std::vector<Extrusion_problem> not_certified_;
+  // condition 3
+  std::vector<Computed_hull> hulls_;
+  std::vector<std::vector<Point_2<double>>> exact_hulls_;  // conv of each computed hull, exactly
+  std::vector<double> eps_max_;
+  std::vector<Box> boxes_;
+};
+
 }  // namespace internal
 
 /// \brief Checks the three sufficient conditions for the extruded object over
@@ -311,8 +537,6 @@ inline Extrusion_verdict decide(double margin_lower, double margin_upper, double
 template <OrientationKernel_2 K, class Algorithm = Graham_fortune_hull>
 Extrusion_report check_extrusion(const Bezier_contour& contour, const Extrusion_options& options = {},
                                  const K& k = K{}, const Algorithm& hull = Algorithm{}) {
-  using internal::add_up;
-  using internal::mul_up;
   // Margins are rounded in hardware: whatever the caller's environment, in
   // round to nearest without FTZ/DAZ (the same for every kernel: a naive one
   // can only downgrade the verdict, never make it depend on the caller).
@@ -321,175 +545,11 @@ Extrusion_report check_extrusion(const Bezier_contour& contour, const Extrusion_
   if (!(delta >= 0) || !std::isfinite(delta) || !(delta_abs >= 0) || !std::isfinite(delta_abs) ||
       !(options.rotation_error >= 0))
     throw Invalid_input("extrusion: uncertainties must be finite and nonnegative");
-  const std::size_t M = contour.size();
-  Extrusion_report rep;
-  rep.curves = M;
-  rep.rotation_error = options.rotation_error;
-  const double rho2 = mul_up(2.0, options.rotation_error);  // a difference or a pair moves by 2 rho
-  for (int c = 0; c < 3; ++c) rep.conditions[c].condition = static_cast<Extrusion_condition>(c + 1);
-  auto eps = [&](std::size_t m, std::size_t i) { return add_up(mul_up(delta, contour.scale(m, i)), delta_abs); };
-
-  std::vector<Extrusion_problem> not_certified;
-  auto record = [&](const Extrusion_problem& p) {
-    auto& s = rep.conditions[static_cast<int>(p.condition) - 1];
-    ++s.problems;
-    s.min_margin = std::min(s.min_margin, p.margin);
-    if (!s.worst || p.slack() < s.worst->slack()) s.worst = p;
-    switch (p.verdict) {
-      case Extrusion_verdict::certified: ++s.certified; break;
-      case Extrusion_verdict::uncertain: ++s.uncertain; break;
-      case Extrusion_verdict::refused: ++s.refused; break;
-    }
-    if (p.verdict != Extrusion_verdict::certified) not_certified.push_back(p);
-  };
-  // A problem on a difference set: margin = signed dist(0, conv(computed hull)).
-  auto origin_problem = [&](Extrusion_condition cond, std::string_view set, std::size_t a, std::size_t b,
-                            const internal::Hull_problem_input& in) {
-    const internal::Computed_hull h = internal::run_hull(std::span<const Point_2<double>>(in.points), k, hull, rep);
-    const Signed_distance d = signed_distance_to_hull(h.vertices, Point_2<double>{0.0, 0.0});
-    Extrusion_problem p;
-    p.condition = cond, p.set = set, p.curve_a = a, p.curve_b = b;
-    p.margin = d.lower();
-    p.uncertainty = in.uncertainty;
-    const double data_error = add_up(in.rounding, rho2);
-    p.computation_error = add_up(data_error, h.backward);
-    p.verdict = internal::decide(p.margin, d.upper(), p.uncertainty, p.computation_error, data_error);
-    record(p);
-  };
-
-  // ---- condition 1: q = { R_{i+1} - R_i } -----------------------------------------
-  for (std::size_t m = 0; m < M; ++m) {
-    const auto& c = contour[m];
-    internal::Hull_problem_input in;
-    for (std::size_t i = 0; i < c.degree(); ++i) {
-      in.points.push_back({c[i + 1].x - c[i].x, c[i + 1].y - c[i].y});
-      in.uncertainty = std::max(in.uncertainty, add_up(eps(m, i + 1), eps(m, i)));
-    }
-    in.rounding = internal::difference_rounding(in.points);
-    origin_problem(Extrusion_condition::no_self_intersection, "q", m, m, in);
-  }
-
-  // ---- condition 2: Q' and Q'' of each adjacent pair (m, m+1) -----------------------
-  for (std::size_t m = 0; m < M; ++m) {
-    const std::size_t n = (m + 1) % M;
-    const auto& a = contour[m];  // R^m, ends at P
-    const auto& b = contour[n];  // R^{m+1}, starts at P
-    internal::Hull_problem_input q1, q2;
-    // Q' = { R^{m+1}_{i+1} - R^m_j : i < v_{m+1}, j <= v_m }
-    for (std::size_t i = 0; i < b.degree(); ++i)
-      for (std::size_t j = 0; j <= a.degree(); ++j) {
-        q1.points.push_back({b[i + 1].x - a[j].x, b[i + 1].y - a[j].y});
-        q1.uncertainty = std::max(q1.uncertainty, add_up(eps(n, i + 1), eps(m, j)));
-      }
-    // Q'' = { R^{m+1}_j - R^m_i : i < v_m, j <= v_{m+1} }   (R~^m_{i'+1} = R^m_{v-1-i'})
-    for (std::size_t i = 0; i < a.degree(); ++i)
-      for (std::size_t j = 0; j <= b.degree(); ++j) {
-        q2.points.push_back({b[j].x - a[i].x, b[j].y - a[i].y});
-        q2.uncertainty = std::max(q2.uncertainty, add_up(eps(n, j), eps(m, i)));
-      }
-    q1.rounding = internal::difference_rounding(q1.points);
-    q2.rounding = internal::difference_rounding(q2.points);
-    origin_problem(Extrusion_condition::adjacent_curves, "Q'", m, n, q1);
-    origin_problem(Extrusion_condition::adjacent_curves, "Q''", m, n, q2);
-  }
-
-  // ---- condition 3: control hulls of non-adjacent pairs ------------------------------
-  if (M >= 4) {
-    rep.non_adjacent_pairs = M * (M - 3) / 2;
-    std::vector<internal::Computed_hull> hulls;
-    std::vector<std::vector<Point_2<double>>> exact_hulls;  // conv of each computed hull, exactly
-    std::vector<double> eps_max(M, 0.0);
-    struct Box {
-      double xmin, ymin, xmax, ymax;
-    };
-    std::vector<Box> boxes(M);
-    for (std::size_t m = 0; m < M; ++m) {
-      const auto& c = contour[m];
-      const auto pts = c.control_points();
-      hulls.push_back(internal::run_hull(pts, k, hull, rep));
-      exact_hulls.push_back(exact_hull(hulls.back().vertices));
-      Box bx{pts[0].x, pts[0].y, pts[0].x, pts[0].y};
-      for (std::size_t i = 0; i < pts.size(); ++i) {
-        eps_max[m] = std::max(eps_max[m], eps(m, i));
-        bx.xmin = std::min(bx.xmin, pts[i].x), bx.xmax = std::max(bx.xmax, pts[i].x);
-        bx.ymin = std::min(bx.ymin, pts[i].y), bx.ymax = std::max(bx.ymax, pts[i].y);
-      }
-      boxes[m] = bx;
-    }
-    auto adjacent = [&](std::size_t a, std::size_t b) {
-      return a == b || (a + 1) % M == b || (b + 1) % M == a;
-    };
-    auto pair_problem = [&](std::size_t a, std::size_t b) {
-      const Signed_distance d = separation_of_hulls(exact_hulls[a], exact_hulls[b]);
-      Extrusion_problem p;
-      p.condition = Extrusion_condition::disjoint_curves, p.set = "hulls", p.curve_a = a, p.curve_b = b;
-      p.margin = d.lower();
-      p.uncertainty = add_up(eps_max[a], eps_max[b]);
-      p.computation_error = add_up(rho2, add_up(hulls[a].backward, hulls[b].backward));
-      p.verdict = internal::decide(p.margin, d.upper(), p.uncertainty, p.computation_error, rho2);
-      ++rep.pairs_computed;
-      record(p);
-    };
-    if (!options.prune) {
-      for (std::size_t a = 0; a < M; ++a)
-        for (std::size_t b = a + 1; b < M; ++b)
-          if (!adjacent(a, b)) pair_problem(a, b);
-    } else {
-      // Radius: at least twice the largest pair requirement (so that every
-      // pair farther apart is certified by its boxes alone), and at least the
-      // median box diagonal (so that the margin reported is the real smallest
-      // separation for contours of similar curves).
-      double need = 0;
-      for (double e : eps_max) need = std::max(need, e);
-      need = add_up(add_up(need, need), rho2);
-      std::vector<double> diag(M);
-      for (std::size_t m = 0; m < M; ++m)
-        diag[m] = std::hypot(boxes[m].xmax - boxes[m].xmin, boxes[m].ymax - boxes[m].ymin);
-      std::nth_element(diag.begin(), diag.begin() + static_cast<std::ptrdiff_t>(M / 2), diag.end());
-      const double r = std::max(mul_up(2.0, need), diag[M / 2]);
-      rep.prune_radius = r;
-      // Boxes whose axis gap exceeds r: the hulls are farther apart than r
-      // (the max of the axis gaps is at most the Euclidean distance of the
-      // boxes), so their pair is certified: r > uncertainty + 2 rho.
-      std::vector<std::size_t> order(M);
-      for (std::size_t m = 0; m < M; ++m) order[m] = m;
-      std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return boxes[a].xmin < boxes[b].xmin; });
-      for (std::size_t s = 0; s < M; ++s) {
-        const std::size_t a = order[s];
-        const double reach = boxes[a].xmax + r;
-        for (std::size_t t = s + 1; t < M && boxes[order[t]].xmin <= reach; ++t) {
-          const std::size_t b = order[t];
-          if (adjacent(a, b)) continue;
-          if (boxes[b].ymin > boxes[a].ymax + r || boxes[a].ymin > boxes[b].ymax + r) continue;
-          pair_problem(std::min(a, b), std::max(a, b));
-        }
-      }
-      // The gap tests above are in double with r as computed; a pair skipped
-      // has a computed gap > r. Each gap is one subtraction, exact to half an
-      // ulp, and r >= 2 need, so the true gap exceeds need: certified.
-      auto& s3 = rep.conditions[2];
-      s3.pruned = rep.non_adjacent_pairs - rep.pairs_computed;
-      const double r_lower = r * (1 - 0x1p-50);  // covers the rounding of the gap tests
-      if (s3.pruned > 0 && r_lower < s3.min_margin) s3.min_margin = r_lower, s3.min_margin_is_prune_bound = true;
-    }
-  }
-
-  // ---- verdicts -----------------------------------------------------------------------
-  rep.verdict = Extrusion_verdict::certified;
-  for (auto& s : rep.conditions) {
-    s.verdict = s.refused ? Extrusion_verdict::refused
-                : s.uncertain ? Extrusion_verdict::uncertain
-                              : Extrusion_verdict::certified;
-    if (s.verdict == Extrusion_verdict::refused) rep.verdict = Extrusion_verdict::refused;
-    else if (s.verdict == Extrusion_verdict::uncertain && rep.verdict == Extrusion_verdict::certified)
-      rep.verdict = Extrusion_verdict::uncertain;
-  }
-  std::sort(not_certified.begin(), not_certified.end(),
-            [](const Extrusion_problem& x, const Extrusion_problem& y) { return x.slack() < y.slack(); });
-  rep.offending_total = not_certified.size();
-  if (not_certified.size() > options.max_listed) not_certified.resize(options.max_listed);
-  rep.offending = std::move(not_certified);
-  return rep;
+  internal::Extrusion_check<K, Algorithm> check(contour, options, k, hull);
+  check.no_self_intersection();
+  check.adjacent_curves();
+  check.disjoint_curves();
+  return std::move(check).report();
 }
 
 }  // namespace relgeo

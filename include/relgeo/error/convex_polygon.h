@@ -4,7 +4,6 @@
 #pragma once
 
 #include <gmpxx.h>
-#include <mpfr.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "relgeo/core/dyadic.h"
 #include "relgeo/core/errors.h"
-#include "relgeo/hull/monotone_chain.h"
 #include "relgeo/core/floating_point.h"
+#include "relgeo/core/rounding.h"
+#include "relgeo/hull/internal/hull_input.h"
+#include "relgeo/hull/monotone_chain.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/kernel/point.h"
 
@@ -53,12 +55,10 @@ inline mpq_class squared_distance_to_segment(const Point_2<double>& p, const Poi
 
 namespace internal {
 
-/// Throws Non_finite_input naming `who` when a point has a NaN or infinite coordinate.
+/// Throws Non_finite_input naming `who` when a point has a NaN or infinite
+/// coordinate (the hulls' input check).
 inline void require_finite(std::span<const Point_2<double>> points, const char* who) {
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (!all_finite(points[i].x, points[i].y))
-      throw Non_finite_input(std::string(who) + ": point " + std::to_string(i) +
-                             " has a NaN or infinite coordinate");
+  require_finite_points<Point_2<double>>(points, who);
 }
 
 /// The exact orientation of three finite points (never `uncertain`: the
@@ -152,22 +152,26 @@ inline mpq_class squared_distance(std::span<const Point_2<double>> poly, const P
   return best;
 }
 
-/// sqrt(q / scale^2) rounded upward to a double (scale > 0): a distance divided
-/// by the coordinate bound M, as the error measures report it.
-inline double sqrt_ratio_up(const mpq_class& q, double scale = 1.0) {
-  mpfr_t v;
-  mpfr_init2(v, 256);
-  mpfr_set_q(v, q.get_mpq_t(), MPFR_RNDU);
-  mpfr_sqrt(v, v, MPFR_RNDU);
-  mpfr_div_d(v, v, scale, MPFR_RNDU);
-  const double d = mpfr_get_d(v, MPFR_RNDU);
-  mpfr_clear(v);
-  return d;
+namespace internal {
+
+/// The distance sqrt(squared) / scale as the error measures report it: a
+/// distance relative to the coordinate bound M, computed exactly and rounded
+/// upward once (256-bit square root of the exact quotient).
+/// \throws Invalid_input when scale is not positive and finite.
+inline double relative_distance(const mpq_class& squared, double scale, const char* who) {
+  if (!(scale > 0) || !std::isfinite(scale))
+    throw Invalid_input(std::string(who) + ": the scale must be positive and finite");
+  const mpq_class s = exact_rational(scale);
+  return sqrt_rational(squared / (s * s), Rounding::upward, 256);
 }
+
+}  // namespace internal
 
 /// Hausdorff distance between the convex hulls of two vertex sets, exactly,
 /// divided by `scale` and rounded upward. For convex sets the largest distance
 /// from one to the other is attained at a vertex.
+/// \throws Non_finite_input for a NaN or infinite coordinate, Invalid_input
+/// when scale is not positive and finite.
 inline double hausdorff_distance(std::span<const Point_2<double>> a_hull,
                                  std::span<const Point_2<double>> b_hull, double scale = 1.0) {
   internal::require_finite(a_hull, "hausdorff_distance");
@@ -177,7 +181,7 @@ inline double hausdorff_distance(std::span<const Point_2<double>> a_hull,
   mpq_class worst = 0;
   for (const auto& v : a_hull) worst = std::max(worst, squared_distance(b_hull, v));
   for (const auto& v : b_hull) worst = std::max(worst, squared_distance(a_hull, v));
-  return sqrt_ratio_up(worst, scale);
+  return internal::relative_distance(worst, scale, "hausdorff_distance");
 }
 
 /// M of eq. (3.2): the largest |coordinate| of the input (0 for no points).

@@ -68,7 +68,7 @@ inline Hull_backward_error hull_backward_error(std::span<const Point_2<double>> 
     if (!b.worst_point || d > worst) worst = std::move(d), b.worst_point = i;
   }
   const double m = coordinate_bound(input);
-  b.value = b.worst_point ? sqrt_ratio_up(worst, m) : 0.0;
+  b.value = b.worst_point ? internal::relative_distance(worst, m, "hull_backward_error") : 0.0;
   return b;
 }
 

@@ -12,7 +12,8 @@
 #include <vector>
 
 #include "relgeo/hull/hull_result.h"
-#include "relgeo/hull/internal/hull_support.h"
+#include "relgeo/hull/internal/hull_frame.h"
+#include "relgeo/hull/internal/hull_input.h"
 #include "relgeo/kernel/cgal_kernel.h"
 
 namespace relgeo {

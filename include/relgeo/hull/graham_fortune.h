@@ -6,7 +6,7 @@
 
 #include "relgeo/hull/hull_result.h"
 #include "relgeo/hull/internal/chain_scan.h"
-#include "relgeo/hull/internal/hull_support.h"
+#include "relgeo/hull/internal/hull_frame.h"
 #include "relgeo/kernel/concepts.h"
 
 namespace relgeo {
@@ -42,12 +42,9 @@ template <OrientationKernel_2 K>
 Hull_result<typename K::Point_2> graham_fortune(std::span<const typename K::Point_2> points,
                                                 const K& k = K{},
                                                 const Hull_options& options = {}) {
-  if constexpr (internal::Exact_on_doubles<K>)  // the same exact signs, on doubles
-    if (auto r = internal::hull_on_exact_doubles<K>(
-            points, [&](auto doubles, const auto& kernel) { return graham_fortune(doubles, kernel, options); }))
-      return std::move(*r);
-  return internal::sorted_hull(points, k, options, "graham_fortune", [&](const auto& sorted, auto& chain, auto& r) {
-    const auto orientation = k.orientation_2_object();
+  return internal::sorted_hull(points, k, options, "graham_fortune", [](const auto& sorted, const auto& kernel,
+                                                                      auto& chain, auto& r) {
+    const auto orientation = kernel.orientation_2_object();
     const std::size_t L = 0, R = sorted.size() - 1;
     // One pass from L to R: each point is tested once against line LR and
     // extends the chain on its side. The upper chain is scanned left to right

@@ -6,49 +6,18 @@
 #include <vector>
 
 #include "relgeo/hull/hull_result.h"
-#include "relgeo/hull/internal/hull_support.h"
+#include "relgeo/hull/internal/hull_frame.h"
+#include "relgeo/hull/internal/sorted_input.h"
 #include "relgeo/kernel/concepts.h"
 
 namespace relgeo {
 
-/// \brief The incremental planar convex hull of L. Kettner, K. Mehlhorn,
-/// S. Pion, S. Schirra, C. Yap, "Classroom examples of robustness problems in
-/// geometric computations" (CGTA 40, 2008) — the thesis' unstable algorithm.
-///
-/// The hull is a counterclockwise circular list seeded with a triangle of
-/// input points; each further point p (in input order) is located by scanning
-/// the edges from the start for the first edge (s, t) with
-/// orientation(s, t, p) < 0 (p sees it). If there is none, p is discarded.
-/// Otherwise the algorithm walks forward while orientation(t, succ t, p) <= 0
-/// and backward while orientation(pred s, s, p) <= 0, removes the vertices
-/// strictly between s and t, and inserts p.
-///
-/// With a naive kernel this fails in the published ways (points lost, non-convex
-/// output, walks that never stop). It never hangs or crashes: a walk longer
-/// than the current hull, or one that meets the other end, ends the run with
-/// status `failed` and failure "non-termination"; the hull so far is returned.
-///
-/// Seeding, generalised from the paper (which assumes it): the triangle is the
-/// first point, the first point different from it and the first point
-/// certainly not collinear with those two (made counterclockwise); the points
-/// skipped meanwhile are processed afterwards in input order. When no such
-/// triangle exists the input is collinear and the result is its two extreme
-/// points (or one point). An `uncertain` answer counts as "not < 0" in the
-/// location scan and as "<= 0" in the walks.
-///
-/// \throws Non_finite_input if a coordinate is NaN or infinite.
-/// Complexity: O(n h) orientation tests, h the hull size.
-template <OrientationKernel_2 K>
-Hull_result<typename K::Point_2> graham_incremental(std::span<const typename K::Point_2> points,
-                                                    const K& k = K{}) {
-  if constexpr (internal::Exact_on_doubles<K>)  // the same exact signs, on doubles
-    if (auto r = internal::hull_on_exact_doubles<K>(
-            points, [](auto doubles, const auto& kernel) { return graham_incremental(doubles, kernel); }))
-      return std::move(*r);
-  using Point = typename K::Point_2;
-  const Default_fp_environment_if<K::is_certified> environment;
-  internal::require_finite_points<Point>(points, "graham_incremental");
-  Hull_result<Point> r;
+namespace internal {
+
+/// The body of graham_incremental (inside hull_frame): the hull of `points`
+/// as input indices into r.
+template <class K>
+void incremental_hull(std::span<const typename K::Point_2> points, const K& k, Hull_result<typename K::Point_2>& r) {
   const auto orientation = k.orientation_2_object();
   const auto compare = k.compare_xy_2_object();
   auto orient = [&](std::size_t a, std::size_t b, std::size_t c) {
@@ -58,7 +27,7 @@ Hull_result<typename K::Point_2> graham_incremental(std::span<const typename K::
     return s;
   };
   const std::size_t n = points.size();
-  if (n == 0) return r;
+  if (n == 0) return;
 
   // Seed triangle.
   std::size_t second = n, third = n;
@@ -69,18 +38,17 @@ Hull_result<typename K::Point_2> graham_incremental(std::span<const typename K::
     if (s == Certified_sign::positive || s == Certified_sign::negative) third = i;
   }
   if (third == n) {  // one distinct point, or (as far as K can tell) collinear
-    const internal::Sorted_input<K> sorted(points, k, &r.uncertain_answers);
+    const Sorted_input<K> sorted(points, k, &r.uncertain_answers);
     if (sorted.undecidable()) {
       r.status = Hull_status::failed;
-      r.failure = internal::undecidable_order_failure;
-      return r;
+      r.failure = undecidable_order_failure;
+      return;
     }
     std::vector<std::size_t> ends;
     if (sorted.size() >= 1) ends.push_back(0);
     if (sorted.size() >= 2) ends.push_back(sorted.size() - 1);
     r.indices = sorted.indices(ends);
-    internal::attach_points(r, points);
-    return r;
+    return;
   }
 
   // Circular doubly linked list over input indices.
@@ -140,9 +108,45 @@ Hull_result<typename K::Point_2> graham_incremental(std::span<const typename K::
     r.indices.push_back(v);
     v = next[v];
   } while (v != start && r.indices.size() <= n);
-  internal::rotate_to_smallest(r.indices, points, k);
-  internal::attach_points(r, points);
-  return r;
+  rotate_to_smallest(r.indices, points, k);
+}
+
+
+}  // namespace internal
+
+/// \brief The incremental planar convex hull of L. Kettner, K. Mehlhorn,
+/// S. Pion, S. Schirra, C. Yap, "Classroom examples of robustness problems in
+/// geometric computations" (CGTA 40, 2008) — the thesis' unstable algorithm.
+///
+/// The hull is a counterclockwise circular list seeded with a triangle of
+/// input points; each further point p (in input order) is located by scanning
+/// the edges from the start for the first edge (s, t) with
+/// orientation(s, t, p) < 0 (p sees it). If there is none, p is discarded.
+/// Otherwise the algorithm walks forward while orientation(t, succ t, p) <= 0
+/// and backward while orientation(pred s, s, p) <= 0, removes the vertices
+/// strictly between s and t, and inserts p.
+///
+/// With a naive kernel this fails in the published ways (points lost, non-convex
+/// output, walks that never stop). It never hangs or crashes: a walk longer
+/// than the current hull, or one that meets the other end, ends the run with
+/// status `failed` and failure "non-termination"; the hull so far is returned.
+///
+/// Seeding, generalised from the paper (which assumes it): the triangle is the
+/// first point, the first point different from it and the first point
+/// certainly not collinear with those two (made counterclockwise); the points
+/// skipped meanwhile are processed afterwards in input order. When no such
+/// triangle exists the input is collinear and the result is its two extreme
+/// points (or one point). An `uncertain` answer counts as "not < 0" in the
+/// location scan and as "<= 0" in the walks.
+///
+/// \throws Non_finite_input if a coordinate is NaN or infinite.
+/// Complexity: O(n h) orientation tests, h the hull size.
+template <OrientationKernel_2 K>
+Hull_result<typename K::Point_2> graham_incremental(std::span<const typename K::Point_2> points,
+                                                    const K& k = K{}) {
+  return internal::hull_frame(points, k, "graham_incremental", [](auto input, const auto& kernel, auto& r) {
+    internal::incremental_hull(input, kernel, r);
+  });
 }
 
 template <OrientationKernel_2 K, class Range>

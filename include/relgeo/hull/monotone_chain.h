@@ -7,7 +7,7 @@
 
 #include "relgeo/hull/hull_result.h"
 #include "relgeo/hull/internal/chain_scan.h"
-#include "relgeo/hull/internal/hull_support.h"
+#include "relgeo/hull/internal/hull_frame.h"
 #include "relgeo/kernel/concepts.h"
 
 namespace relgeo {
@@ -30,15 +30,12 @@ template <OrientationKernel_2 K>
 Hull_result<typename K::Point_2> monotone_chain(std::span<const typename K::Point_2> points,
                                                 const K& k = K{},
                                                 const Hull_options& options = {}) {
-  if constexpr (internal::Exact_on_doubles<K>)  // the same exact signs, on doubles
-    if (auto r = internal::hull_on_exact_doubles<K>(
-            points, [&](auto doubles, const auto& kernel) { return monotone_chain(doubles, kernel, options); }))
-      return std::move(*r);
-  return internal::sorted_hull(points, k, options, "monotone_chain", [&](const auto& sorted, auto& chain, auto& r) {
+  return internal::sorted_hull(points, k, options, "monotone_chain", [](const auto& sorted, const auto& kernel,
+                                                                      auto& chain, auto& r) {
     const std::size_t m = sorted.size();
-    internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m), k, chain, 0, r);  // lower, L..R
+    internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m), kernel, chain, 0, r);  // lower, L..R
     const std::size_t lower_size = chain.size();
-    internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m - 1) | std::views::reverse, k,
+    internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m - 1) | std::views::reverse, kernel,
                          chain, lower_size - 1, r);  // upper, R..L
     chain.pop_back();  // L again
   });

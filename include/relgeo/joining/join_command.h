@@ -6,8 +6,9 @@
 //               [--curve C.json] --output J.off [--report R.json]
 //               [--method whitney|naive|occt] [--kernel failsafe|interval|filtered|exact]
 //
-// Needs CGAL, Eigen and nlohmann-json; STEP/IGES input and the occt method
-// need relgeo::occt (RELGEO_HAS_OCCT); without it they are Invalid_input.
+// Needs CGAL, Eigen and relgeo::io (nlohmann-json); STEP/IGES input and the
+// occt method need relgeo::occt (RELGEO_HAS_OCCT); without it they are
+// Invalid_input.
 #pragma once
 
 #include <filesystem>
@@ -15,8 +16,6 @@
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "relgeo/core/errors.h"
 #include "relgeo/joining/join_report_json.h"
@@ -135,10 +134,10 @@ inline Join_command_report run_join(const Join_command_options& o) {
 }
 
 /// The command's JSON output.
-inline nlohmann::json to_json(const Join_command_report& r) {
-  nlohmann::json j = to_json(r.report);
+inline io::Json to_json(const Join_command_report& r) {
+  io::Json j = to_json(r.report);
   j["status"] = r.status;
-  j["failure"] = r.failure.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.failure);
+  j["failure"] = r.failure.empty() ? io::Json(nullptr) : io::Json(r.failure);
   j["surface"] = r.surface;
   j["meshes"] = r.meshes;
   j["output"] = r.output;

@@ -1,33 +1,23 @@
-// relgeo/joining/join_report_json.h — joining reports as JSON (nlohmann-json;
-// link nlohmann_json::nlohmann_json). Field names are the members' names
-// (join_report.h documents them); infinite values are written as "inf".
+// relgeo/joining/join_report_json.h — joining reports as JSON documents of
+// relgeo/io (link relgeo::io): field names are the members' names, in their
+// order (join_report.h documents them); measures follow io::json_measure
+// (infinite ones as "inf", NaN as null).
 #pragma once
 
-#include <nlohmann/json.hpp>
-
-#include <cmath>
-
+#include "relgeo/io/json.h"
 #include "relgeo/joining/join_report.h"
 
 namespace relgeo {
 
-namespace internal {
-inline nlohmann::json json_number(double x) {
-  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  if (std::isnan(x)) return nullptr;
-  return x;
+inline io::Json to_json(const Join_errors& e) {
+  return {{"absolute", io::json_measure(e.absolute)}, {"normal_vector", io::json_measure(e.normal_vector)}};
 }
-}  // namespace internal
-
-inline nlohmann::json to_json(const Join_errors& e) {
-  return {{"absolute", internal::json_number(e.absolute)}, {"normal_vector", internal::json_number(e.normal_vector)}};
-}
-inline nlohmann::json to_json(const Join_orientation& o) {
+inline io::Json to_json(const Join_orientation& o) {
   return {{"positive", o.positive}, {"flipped", o.flipped}, {"degenerate", o.degenerate}, {"undecided", o.undecided}};
 }
 
-inline nlohmann::json to_json(const Join_face_report& f) {
-  using internal::json_number;
+inline io::Json to_json(const Join_face_report& f) {
+  using io::json_measure;
   return {{"input_vertices", f.input_vertices},
           {"input_triangles", f.input_triangles},
           {"central_triangles", f.central_triangles},
@@ -39,10 +29,10 @@ inline nlohmann::json to_json(const Join_face_report& f) {
           {"before", to_json(f.before)},
           {"after", to_json(f.after)},
           {"after_reprojected", to_json(f.after_reprojected)},
-          {"boundary_max_abs_height", json_number(f.boundary_max_abs_height)},
-          {"lipschitz_constant", json_number(f.lipschitz_constant)},
-          {"data_lipschitz_constant", json_number(f.data_lipschitz_constant)},
-          {"max_deviation", json_number(f.max_deviation)},
+          {"boundary_max_abs_height", json_measure(f.boundary_max_abs_height)},
+          {"lipschitz_constant", json_measure(f.lipschitz_constant)},
+          {"data_lipschitz_constant", json_measure(f.data_lipschitz_constant)},
+          {"max_deviation", json_measure(f.max_deviation)},
           {"whitney_fallbacks", f.whitney_fallbacks},
           {"whitney_uncertified", f.whitney_uncertified},
           {"edges_above_lipschitz", f.edges_above_lipschitz},
@@ -50,14 +40,14 @@ inline nlohmann::json to_json(const Join_face_report& f) {
           {"orientation_after", to_json(f.orientation_after)},
           {"overlaps_after", f.overlaps_after},
           {"overlaps_undecided_after", f.overlaps_undecided_after},
-          {"min_angle_external", json_number(f.min_angle_external)},
+          {"min_angle_external", json_measure(f.min_angle_external)},
           {"guarantees_hold", f.guarantees_hold}};
 }
 
-inline nlohmann::json to_json(const Join_report& r) {
-  nlohmann::json faces = nlohmann::json::array();
+inline io::Json to_json(const Join_report& r) {
+  io::Json faces = io::Json::array();
   for (const auto& f : r.faces) faces.push_back(to_json(f));
-  nlohmann::json seconds = nlohmann::json::object();
+  io::Json seconds = io::Json::object();
   for (const auto& [step, s] : r.seconds) seconds[step] = s;
   return {{"method", r.method},
           {"kernel", r.kernel},
@@ -73,7 +63,7 @@ inline nlohmann::json to_json(const Join_report& r) {
           {"non_manifold_edges", r.non_manifold_edges},
           {"inconsistent_orientations", r.inconsistent_orientations},
           {"flipped_triangles", r.flipped_triangles},
-          {"min_angle_3d", internal::json_number(r.min_angle_3d)},
+          {"min_angle_3d", io::json_measure(r.min_angle_3d)},
           {"conforming", r.conforming},
           {"watertight_seams", r.watertight_seams},
           {"guarantees_hold", r.guarantees_hold},

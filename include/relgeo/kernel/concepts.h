@@ -13,6 +13,7 @@
 #include <string>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/kernel/implicit_point.h"
 
 namespace relgeo {
 
@@ -67,5 +68,30 @@ concept OrientationKernel_3 =
 /// A complete relgeo kernel: metadata, 2D and 3D predicates.
 template <class K>
 concept Kernel = KernelProperties<K> && OrientationKernel_2<K> && OrientationKernel_3<K>;
+
+/// \concept IntersectionKernel_3
+/// A Kernel with implicit points (kernel/implicit_point.h): `Implicit_point_3`,
+/// an input point or an LPI/TPI point kept by what defines it, cheap to
+/// copy; its construction (optional: empty when the kernel cannot certify
+/// that the point exists) and the predicates on any mix of explicit and
+/// implicit points — orientation_3, the orientation of a projection dropping
+/// one axis, CGAL's coplanar orientation, lexicographic comparison (`zero`:
+/// the same point) — and a double approximation with an error bound. The
+/// soundness rule applies unchanged. What the Booleans need.
+template <class K>
+concept IntersectionKernel_3 =
+    Kernel<K> && std::copyable<typename K::Implicit_point_3> &&
+    requires(const K& k, const typename K::Point_3& p, const typename K::Implicit_point_3& i) {
+      { k.construct_implicit_point_3_object()(p) } -> std::same_as<typename K::Implicit_point_3>;
+      { k.construct_implicit_point_3_object()(p, p, p, p, p) } -> std::same_as<std::optional<typename K::Implicit_point_3>>;
+      { k.construct_implicit_point_3_object()(p, p, p, p, p, p, p, p, p) }
+          -> std::same_as<std::optional<typename K::Implicit_point_3>>;
+      { k.implicit_orientation_3_object()(i, i, i, i) } -> std::same_as<Certified_sign>;
+      { k.implicit_orientation_2_object()(i, i, i, 0) } -> std::same_as<Certified_sign>;
+      { k.implicit_coplanar_orientation_3_object()(i, i, i) } -> std::same_as<Certified_sign>;
+      { k.implicit_coplanar_orientation_3_object()(i, i, i, i) } -> std::same_as<Certified_sign>;
+      { k.compare_xyz_3_object()(i, i) } -> std::same_as<Certified_sign>;
+      { k.approximate_point_3_object()(i) } -> std::same_as<Approximate_point_3>;
+    };
 
 }  // namespace relgeo

@@ -13,8 +13,11 @@
 #include "relgeo/core/dyadic.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/kernel_base.h"
+#include "relgeo/kernel/internal/implicit_rounded.h"
 
 namespace relgeo {
+
+class Filtered_exact_kernel;  // the Double_point_kernel hook below (filtered_exact_kernel.h)
 
 /// \brief Kernel over GMP rationals (mpq_class): exact predicates and exact
 /// constructions. Slow; it is the reference every other kernel is measured
@@ -22,7 +25,8 @@ namespace relgeo {
 ///
 /// Building a point from a NaN or infinite double throws Non_finite_input
 /// (a rational cannot hold it).
-class Exact_kernel : public internal::Kernel_base<Exact_kernel, mpq_class> {
+class Exact_kernel : public internal::Kernel_base<Exact_kernel, mpq_class>,
+                     public internal::Implicit_kernel_base<internal::Rounded_implicit_policy<Exact_kernel, mpq_class>> {
  public:
   static std::string name() { return "exact"; }
   static constexpr double unit_roundoff = 0;
@@ -69,10 +73,16 @@ class Exact_kernel : public internal::Kernel_base<Exact_kernel, mpq_class> {
     if (std::ldexp(d, static_cast<int>(scale)) != m) return std::nullopt;  // lost to underflow
     return d;
   }
-  /// p as a point of doubles when both coordinates are doubles exactly.
-  /// Algorithms use it to run Filtered_exact_kernel, whose predicates give the
-  /// same exact signs on the same values, instead of rational arithmetic
-  /// (relgeo/hull: 40x faster on 10^6 points).
+  /// Kernel hook "double-point kernel" (Has_double_point_kernel,
+  /// kernel/kernel_for_number.h): on points of doubles, Filtered_exact_kernel
+  /// answers every predicate with the exact sign this kernel answers on the
+  /// same values, without rational arithmetic. Algorithms whose result
+  /// depends only on predicate signs of their input points run there when
+  /// every point is exactly a point of doubles (the hulls: 40x faster on 10^6
+  /// points).
+  using Double_point_kernel = Filtered_exact_kernel;
+  /// p as a point of doubles when both coordinates are doubles exactly (the
+  /// other half of the hook).
   static std::optional<relgeo::Point_2<double>> exact_double_point(const Point_2& p) {
     const std::optional<double> x = exact_double(p.x), y = exact_double(p.y);
     if (!x || !y) return std::nullopt;

@@ -8,6 +8,7 @@
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/kernel_base.h"
+#include "relgeo/kernel/internal/implicit_enclosed.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
 
 namespace relgeo {
@@ -37,7 +38,9 @@ namespace relgeo {
 /// \tparam T float, double or long double.
 template <class T>
   requires std::is_floating_point_v<T>
-class Failsafe_kernel : public internal::Kernel_base<Failsafe_kernel<T>, T> {
+class Failsafe_kernel
+    : public internal::Kernel_base<Failsafe_kernel<T>, T>,
+      public internal::Implicit_kernel_base<internal::Enclosed_implicit_policy<Point_3<T>, internal::Filtered_value<T>>> {
   using Base = internal::Kernel_base<Failsafe_kernel<T>, T>;
   using C = internal::Orientation_filter_constants<T>;
 

@@ -9,6 +9,7 @@
 #include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/kernel_base.h"
+#include "relgeo/kernel/internal/implicit_enclosed.h"
 #include "relgeo/core/interval.h"
 
 namespace relgeo {
@@ -22,7 +23,9 @@ namespace relgeo {
 /// enclosure of the exact point. Non-finite coordinates give `uncertain`.
 /// Interval arithmetic needs round to nearest without FTZ/DAZ: the
 /// predicates run in that environment whatever the caller set.
-class Interval_kernel : public internal::Kernel_base<Interval_kernel, Interval> {
+class Interval_kernel
+    : public internal::Kernel_base<Interval_kernel, Interval>,
+      public internal::Implicit_kernel_base<internal::Enclosed_implicit_policy<Point_3<Interval>, Interval>> {
  public:
   static std::string name() { return "interval"; }
   static constexpr double unit_roundoff = unit_roundoff_v<double>;

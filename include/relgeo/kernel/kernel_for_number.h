@@ -4,6 +4,8 @@
 
 #include <gmpxx.h>
 
+#include <concepts>
+#include <optional>
 #include <type_traits>
 
 #include "relgeo/kernel/exact_kernel.h"
@@ -12,6 +14,7 @@
 #include "relgeo/kernel/interval_kernel.h"
 #include "relgeo/kernel/mpfr_kernel.h"
 #include "relgeo/kernel/naive_kernel.h"
+#include "relgeo/kernel/point.h"
 
 namespace relgeo {
 
@@ -50,5 +53,26 @@ template <>
 struct Predicate_kernel_for_number<double> {
   using type = Filtered_exact_kernel;
 };
+
+/// \brief Kernel hook: a faster kernel for input that is doubles.
+///
+/// A kernel K with exact predicates may name `K::Double_point_kernel`, a
+/// kernel over relgeo::Point_2<double> whose predicates answer, on points of
+/// doubles, exactly the signs K's predicates answer on the same values, and
+/// provide `K::exact_double_point(p)`: p as a Point_2<double> when both of its
+/// coordinates are doubles exactly, nullopt otherwise. An algorithm whose
+/// result depends only on predicate signs of its input points may then run
+/// with Double_point_kernel on the converted input and get K's result: the
+/// same answers, so the same output and statistics. Exact_kernel names
+/// Filtered_exact_kernel (no rational arithmetic for input read from
+/// doubles). The hull algorithms consult the hook once, in their common
+/// frame (hull/internal/hull_frame.h).
+template <class K>
+concept Has_double_point_kernel =
+    K::has_exact_predicates && std::default_initializable<typename K::Double_point_kernel> &&
+    std::same_as<typename K::Double_point_kernel::Point_2, relgeo::Point_2<double>> &&
+    requires(const typename K::Point_2& p) {
+      { K::exact_double_point(p) } -> std::same_as<std::optional<relgeo::Point_2<double>>>;
+    };
 
 }  // namespace relgeo

@@ -9,6 +9,7 @@
 #include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/kernel_base.h"
+#include "relgeo/kernel/internal/implicit_rounded.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
 #include "relgeo/core/mpfr_number.h"
 
@@ -22,7 +23,9 @@ namespace relgeo {
 /// Points built from doubles are rounded to `Bits` (exact for Bits >= 53).
 /// Non-finite coordinates throw Non_finite_input at construction.
 template <int Bits>
-class Mpfr_kernel : public internal::Kernel_base<Mpfr_kernel<Bits>, Mpfr_number<Bits>> {
+class Mpfr_kernel
+    : public internal::Kernel_base<Mpfr_kernel<Bits>, Mpfr_number<Bits>>,
+      public internal::Implicit_kernel_base<internal::Rounded_implicit_policy<Mpfr_kernel<Bits>, Mpfr_number<Bits>>> {
   using Base = internal::Kernel_base<Mpfr_kernel<Bits>, Mpfr_number<Bits>>;
 
  public:

@@ -8,6 +8,7 @@
 #include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/determinants.h"
 #include "relgeo/kernel/internal/kernel_base.h"
+#include "relgeo/kernel/internal/implicit_rounded.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
 
 namespace relgeo {
@@ -26,7 +27,8 @@ namespace relgeo {
 /// \cgalModels{Kernel}
 template <class T>
   requires std::is_floating_point_v<T>
-class Naive_kernel : public internal::Kernel_base<Naive_kernel<T>, T> {
+class Naive_kernel : public internal::Kernel_base<Naive_kernel<T>, T>,
+                     public internal::Implicit_kernel_base<internal::Rounded_implicit_policy<Naive_kernel<T>, T>> {
   using Base = internal::Kernel_base<Naive_kernel<T>, T>;
   using C = internal::Orientation_filter_constants<T>;
 

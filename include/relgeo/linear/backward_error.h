@@ -6,7 +6,6 @@
 #pragma once
 
 #include <gmpxx.h>
-#include <mpfr.h>
 
 #include <algorithm>
 #include <climits>
@@ -17,7 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "relgeo/core/dyadic.h"
 #include "relgeo/core/errors.h"
+#include "relgeo/core/number_traits.h"
+#include "relgeo/core/rounding.h"
 #include "relgeo/linear/exact_solution.h"
 #include "relgeo/linear/gaussian_elimination.h"
 #include "relgeo/linear/scalar_traits.h"
@@ -26,48 +28,27 @@ namespace relgeo {
 
 namespace internal {
 
-/// A rational rounded upward to a double (+inf above DBL_MAX).
-inline double rational_up(const mpq_class& q) {
-  mpfr_t v;
-  mpfr_init2(v, 53);
-  mpfr_set_q(v, q.get_mpq_t(), MPFR_RNDU);
-  const double d = mpfr_get_d(v, MPFR_RNDU);
-  mpfr_clear(v);
-  return d;
-}
-/// a / b rounded upward (a, b >= 0; 0/0 = 0, a/0 = +inf).
-inline double ratio_up(const mpq_class& a, const mpq_class& b) {
-  if (sgn(a) == 0) return 0.0;
-  if (sgn(b) == 0) return std::numeric_limits<double>::infinity();
-  return rational_up(a / b);
-}
-
-/// A dyadic rational m * 2^e, the form of every binary floating-point value.
-struct Dyadic {
-  mpz_class m;
-  long e = 0;
-};
-
-/// q as m * 2^e when its denominator is a power of two.
-inline bool to_dyadic(const mpq_class& q, Dyadic& out) {
-  const mpz_srcptr den = q.get_den_mpz_t();
-  const mp_bitcnt_t low = mpz_scan1(den, 0);
-  if (mpz_sizeinbase(den, 2) != low + 1) return false;  // not a power of two
-  out.m = q.get_num();
-  out.e = -static_cast<long>(low);
-  if (sgn(out.m) != 0) {  // normalise: odd mantissa (smaller products)
-    const mp_bitcnt_t tz = mpz_scan1(out.m.get_mpz_t(), 0);
-    mpz_fdiv_q_2exp(out.m.get_mpz_t(), out.m.get_mpz_t(), tz);
-    out.e += static_cast<long>(tz);
-  }
+/// The entries of m in dyadic form (column-major) into `out`; false, with
+/// `out` partly filled, as soon as one is not dyadic.
+template <class Matrix>
+bool dyadic_entries(const Matrix& m, std::vector<Dyadic>& out) {
+  out.clear();
+  out.reserve(static_cast<std::size_t>(m.size()));
+  for (Eigen::Index j = 0; j < m.cols(); ++j)
+    for (Eigen::Index i = 0; i < m.rows(); ++i) {
+      std::optional<Dyadic> d = dyadic_of(m(i, j));
+      if (!d) return false;
+      out.push_back(std::move(*d));
+    }
   return true;
 }
 
-inline mpq_class from_dyadic(const mpz_class& m, long e) {
-  mpq_class q(m);
-  if (e > 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
-  else if (e < 0) mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
-  return q;
+/// The measure a / b (a, b >= 0) rounded upward, with the conventions 0 / 0 = 0
+/// and a / 0 = +inf.
+inline double measure_ratio(const mpq_class& a, const mpq_class& b) {
+  if (sgn(a) == 0) return 0.0;
+  if (sgn(b) == 0) return std::numeric_limits<double>::infinity();
+  return round_rational<double>(a / b, Rounding::upward);
 }
 
 }  // namespace internal
@@ -144,13 +125,9 @@ class Linear_reference {
   template <class P>
   Linear_reference(const Dense_matrix<P>& a, const Dense_vector<P>& b,
                    const Linear_reference_options& options = {}) {
-    if (a.rows() != a.cols())
-      throw Invalid_input("linear system: the matrix is " + std::to_string(a.rows()) + " x " +
-                          std::to_string(a.cols()) + ", not square");
-    if (a.rows() == 0) throw Invalid_input("linear system: empty matrix", Error_code::empty_input);
-    if (b.size() != a.rows())
-      throw Invalid_input("linear system: the matrix has " + std::to_string(a.rows()) +
-                          " rows but the right-hand side has " + std::to_string(b.size()) + " entries");
+    internal::require_square(a, "linear system");
+    internal::require_not_empty(a, "linear system");
+    internal::require_rhs_rows(a, b, "linear system");
     a_ = to_rational_matrix(a);
     b_ = to_rational_vector(b);
     init(options);
@@ -169,10 +146,10 @@ class Linear_reference {
   /// exact integer accumulation instead of rationals.
   bool dyadic() const { return dyadic_; }
   /// Row i of A and b_i in dyadic form. \pre dyadic().
-  const internal::Dyadic& a_dyadic(Eigen::Index i, Eigen::Index j) const {
+  const Dyadic& a_dyadic(Eigen::Index i, Eigen::Index j) const {
     return ad_[static_cast<std::size_t>(j * a_.rows() + i)];
   }
-  const internal::Dyadic& b_dyadic(Eigen::Index i) const { return bd_[static_cast<std::size_t>(i)]; }
+  const Dyadic& b_dyadic(Eigen::Index i) const { return bd_[static_cast<std::size_t>(i)]; }
 
  private:
   void init(const Linear_reference_options& o) {
@@ -186,13 +163,7 @@ class Linear_reference {
     norm_b_ = 0;
     for (Eigen::Index i = 0; i < n; ++i)
       if (abs(b_(i)) > norm_b_) norm_b_ = abs(b_(i));
-    dyadic_ = true;
-    ad_.resize(static_cast<std::size_t>(n * n));
-    bd_.resize(static_cast<std::size_t>(n));
-    for (Eigen::Index j = 0; j < n && dyadic_; ++j)
-      for (Eigen::Index i = 0; i < n && dyadic_; ++i)
-        dyadic_ = internal::to_dyadic(a_(i, j), ad_[static_cast<std::size_t>(j * n + i)]);
-    for (Eigen::Index i = 0; i < n && dyadic_; ++i) dyadic_ = internal::to_dyadic(b_(i), bd_[static_cast<std::size_t>(i)]);
+    dyadic_ = internal::dyadic_entries(a_, ad_) && internal::dyadic_entries(b_, bd_);
     if (!dyadic_) ad_.clear(), bd_.clear();
 
     if (static_cast<std::size_t>(n) <= o.exact_solution_limit) x_ = exact_solve(a_, b_);
@@ -204,12 +175,12 @@ class Linear_reference {
         for (Eigen::Index j = 0; j < n; ++j) s += abs(inv(i, j));
         if (s > ninv) ninv = s;
       }
-      cond_ = {internal::rational_up(norm_a_ * ninv), true};
+      cond_ = {round_rational<double>(norm_a_ * ninv, Rounding::upward), true};
     } else {
       Dense_matrix<double> ad(n, n);
       for (Eigen::Index j = 0; j < n; ++j)
-        for (Eigen::Index i = 0; i < n; ++i) ad(i, j) = Scalar_traits<mpq_class>::to_double(a_(i, j));
-      cond_ = {internal::rational_up(norm_a_) * estimate_inverse_norm_inf(ad), false};
+        for (Eigen::Index i = 0; i < n; ++i) ad(i, j) = nearest_double(a_(i, j));
+      cond_ = {round_rational<double>(norm_a_, Rounding::upward) * estimate_inverse_norm_inf(ad), false};
     }
   }
 
@@ -219,7 +190,7 @@ class Linear_reference {
   Condition_number cond_;
   mpq_class norm_a_, norm_b_;
   bool dyadic_ = false;
-  std::vector<internal::Dyadic> ad_, bd_;
+  std::vector<Dyadic> ad_, bd_;
 };
 
 /// The measures of one computed solution x~ of A x = b (infinity norms).
@@ -252,7 +223,7 @@ Linear_solution_errors measure_solution(const Linear_reference& ref, const Dense
                         " entries for a system of size " + std::to_string(n));
   Linear_solution_errors e;
   for (Eigen::Index i = 0; i < n; ++i)
-    if (!Scalar_traits<S>::is_finite(x(i))) {
+    if (!is_finite_number(x(i))) {
       const double inf = std::numeric_limits<double>::infinity();
       e.finite = false;
       e.normwise_backward_error = e.componentwise_backward_error = e.residual_norm = inf;
@@ -264,12 +235,8 @@ Linear_solution_errors measure_solution(const Linear_reference& ref, const Dense
   for (Eigen::Index i = 0; i < n; ++i)
     if (abs(xq(i)) > norm_x) norm_x = abs(xq(i));
 
-  std::vector<internal::Dyadic> xd;
-  bool dyadic = ref.dyadic();
-  if (dyadic) {
-    xd.resize(static_cast<std::size_t>(n));
-    for (Eigen::Index j = 0; j < n && dyadic; ++j) dyadic = internal::to_dyadic(xq(j), xd[static_cast<std::size_t>(j)]);
-  }
+  std::vector<Dyadic> xd;
+  const bool dyadic = ref.dyadic() && internal::dyadic_entries(xq, xd);
 
   mpq_class norm_r = 0, worst_component = 0;  // worst |r_i| / s_i as a rational
   bool component_infinite = false;
@@ -278,35 +245,35 @@ Linear_solution_errors measure_solution(const Linear_reference& ref, const Dense
     mpq_class r, s;
     if (dyadic) {
       long emin = LONG_MAX;
-      const internal::Dyadic& bi = ref.b_dyadic(i);
-      if (sgn(bi.m) != 0) emin = bi.e;
+      const Dyadic& bi = ref.b_dyadic(i);
+      if (sgn(bi.mantissa) != 0) emin = bi.exponent;
       for (Eigen::Index j = 0; j < n; ++j) {
-        const internal::Dyadic& aij = ref.a_dyadic(i, j);
-        const internal::Dyadic& xj = xd[static_cast<std::size_t>(j)];
-        if (sgn(aij.m) != 0 && sgn(xj.m) != 0) emin = std::min(emin, aij.e + xj.e);
+        const Dyadic& aij = ref.a_dyadic(i, j);
+        const Dyadic& xj = xd[static_cast<std::size_t>(j)];
+        if (sgn(aij.mantissa) != 0 && sgn(xj.mantissa) != 0) emin = std::min(emin, aij.exponent + xj.exponent);
       }
       if (emin == LONG_MAX) {  // b_i = 0 and every product 0
         r = 0, s = 0;
       } else {
         acc = 0, acc_abs = 0;
         for (Eigen::Index j = 0; j < n; ++j) {
-          const internal::Dyadic& aij = ref.a_dyadic(i, j);
-          const internal::Dyadic& xj = xd[static_cast<std::size_t>(j)];
-          if (sgn(aij.m) == 0 || sgn(xj.m) == 0) continue;
-          mpz_mul(t.get_mpz_t(), aij.m.get_mpz_t(), xj.m.get_mpz_t());
-          mpz_mul_2exp(t.get_mpz_t(), t.get_mpz_t(), static_cast<mp_bitcnt_t>(aij.e + xj.e - emin));
+          const Dyadic& aij = ref.a_dyadic(i, j);
+          const Dyadic& xj = xd[static_cast<std::size_t>(j)];
+          if (sgn(aij.mantissa) == 0 || sgn(xj.mantissa) == 0) continue;
+          mpz_mul(t.get_mpz_t(), aij.mantissa.get_mpz_t(), xj.mantissa.get_mpz_t());
+          mpz_mul_2exp(t.get_mpz_t(), t.get_mpz_t(), static_cast<mp_bitcnt_t>(aij.exponent + xj.exponent - emin));
           acc -= t;
           if (sgn(t) < 0) acc_abs -= t;
           else acc_abs += t;
         }
-        if (sgn(bi.m) != 0) {
-          mpz_mul_2exp(t.get_mpz_t(), bi.m.get_mpz_t(), static_cast<mp_bitcnt_t>(bi.e - emin));
+        if (sgn(bi.mantissa) != 0) {
+          mpz_mul_2exp(t.get_mpz_t(), bi.mantissa.get_mpz_t(), static_cast<mp_bitcnt_t>(bi.exponent - emin));
           acc += t;
           if (sgn(t) < 0) acc_abs -= t;
           else acc_abs += t;
         }
-        r = internal::from_dyadic(acc, emin);
-        s = internal::from_dyadic(acc_abs, emin);
+        r = to_rational(acc, emin);
+        s = to_rational(acc_abs, emin);
       }
     } else {
       r = ref.b()(i);
@@ -324,10 +291,10 @@ Linear_solution_errors measure_solution(const Linear_reference& ref, const Dense
       else if (const mpq_class q = ar / s; q > worst_component) worst_component = q;
     }
   }
-  e.residual_norm = internal::rational_up(norm_r);
-  e.normwise_backward_error = internal::ratio_up(norm_r, ref.norm_a() * norm_x + ref.norm_b());
-  e.componentwise_backward_error =
-      component_infinite ? std::numeric_limits<double>::infinity() : internal::rational_up(worst_component);
+  e.residual_norm = round_rational<double>(norm_r, Rounding::upward);
+  e.normwise_backward_error = internal::measure_ratio(norm_r, ref.norm_a() * norm_x + ref.norm_b());
+  e.componentwise_backward_error = component_infinite ? std::numeric_limits<double>::infinity()
+                                                      : round_rational<double>(worst_component, Rounding::upward);
   if (ref.solution()) {
     const Dense_vector<mpq_class>& xs = *ref.solution();
     mpq_class num = 0, den = 0;
@@ -336,7 +303,7 @@ Linear_solution_errors measure_solution(const Linear_reference& ref, const Dense
       if (d > num) num = d;
       if (abs(xs(i)) > den) den = abs(xs(i));
     }
-    e.forward_error = internal::ratio_up(num, den);
+    e.forward_error = internal::measure_ratio(num, den);
   }
   return e;
 }

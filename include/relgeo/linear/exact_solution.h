@@ -8,38 +8,40 @@
 #include <utility>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/core/number_traits.h"
 #include "relgeo/linear/gaussian_elimination.h"
 #include "relgeo/linear/scalar_traits.h"
 
 namespace relgeo {
 
+namespace internal {
+/// The matrix or vector of f(entry), with entries of type T.
+template <class T, class Matrix, class F>
+Eigen::Matrix<T, Matrix::RowsAtCompileTime, Matrix::ColsAtCompileTime> map_entries(const Matrix& m, F f) {
+  Eigen::Matrix<T, Matrix::RowsAtCompileTime, Matrix::ColsAtCompileTime> r(m.rows(), m.cols());
+  for (Eigen::Index j = 0; j < m.cols(); ++j)
+    for (Eigen::Index i = 0; i < m.rows(); ++i) r(i, j) = f(m(i, j));
+  return r;
+}
+}  // namespace internal
+
 /// The exact value of every entry (throws Non_finite_input for NaN/inf).
 template <class S>
 Dense_matrix<mpq_class> to_rational_matrix(const Dense_matrix<S>& a) {
-  Dense_matrix<mpq_class> q(a.rows(), a.cols());
-  for (Eigen::Index j = 0; j < a.cols(); ++j)
-    for (Eigen::Index i = 0; i < a.rows(); ++i) q(i, j) = Scalar_traits<S>::to_rational(a(i, j));
-  return q;
+  return internal::map_entries<mpq_class>(a, [](const S& v) { return mpq_class(Number_traits<S>::to_rational(v)); });
 }
 template <class S>
 Dense_vector<mpq_class> to_rational_vector(const Dense_vector<S>& v) {
-  Dense_vector<mpq_class> q(v.size());
-  for (Eigen::Index i = 0; i < v.size(); ++i) q(i) = Scalar_traits<S>::to_rational(v(i));
-  return q;
+  return internal::map_entries<mpq_class>(v, [](const S& x) { return mpq_class(Number_traits<S>::to_rational(x)); });
 }
 /// Every entry correctly rounded to S.
 template <class S>
 Dense_matrix<S> from_rational_matrix(const Dense_matrix<mpq_class>& q) {
-  Dense_matrix<S> a(q.rows(), q.cols());
-  for (Eigen::Index j = 0; j < q.cols(); ++j)
-    for (Eigen::Index i = 0; i < q.rows(); ++i) a(i, j) = Scalar_traits<S>::from_rational(q(i, j));
-  return a;
+  return internal::map_entries<S>(q, [](const mpq_class& x) { return Number_traits<S>::from_rational(x); });
 }
 template <class S>
 Dense_vector<S> from_rational_vector(const Dense_vector<mpq_class>& q) {
-  Dense_vector<S> v(q.size());
-  for (Eigen::Index i = 0; i < q.size(); ++i) v(i) = Scalar_traits<S>::from_rational(q(i));
-  return v;
+  return internal::map_entries<S>(q, [](const mpq_class& x) { return Number_traits<S>::from_rational(x); });
 }
 
 namespace internal {
@@ -115,12 +117,8 @@ inline Dense_matrix<mpq_class> bareiss_solve(const Dense_matrix<mpq_class>& a,
 /// Complexity: O(n^3) operations on integers of O(n (bits per entry)) bits.
 inline Dense_vector<mpq_class> exact_solve(const Dense_matrix<mpq_class>& a,
                                            const Dense_vector<mpq_class>& b) {
-  if (a.rows() != a.cols())
-    throw Invalid_input("exact solve: the matrix is " + std::to_string(a.rows()) + " x " +
-                        std::to_string(a.cols()) + ", not square");
-  if (b.size() != a.rows())
-    throw Invalid_input("exact solve: the matrix has " + std::to_string(a.rows()) +
-                        " rows but the right-hand side has " + std::to_string(b.size()) + " entries");
+  internal::require_square(a, "exact solve");
+  internal::require_rhs_rows(a, b, "exact solve");
   Dense_matrix<mpq_class> bb(b.size(), 1);
   bb.col(0) = b;
   return internal::bareiss_solve(a, bb).col(0);

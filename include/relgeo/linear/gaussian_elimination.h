@@ -1,6 +1,6 @@
 // relgeo/linear/gaussian_elimination.h — Gaussian elimination without
-// pivoting, with partial and with complete ("total") pivoting, in any scalar
-// of relgeo/linear/scalar_traits.h (thesis Sec. 3.2).
+// pivoting, with partial and with complete ("total") pivoting, in any
+// Linear_scalar (relgeo/linear/scalar_traits.h; thesis Sec. 3.2).
 #pragma once
 
 #include <Eigen/Core>
@@ -13,14 +13,16 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/core/number_traits.h"
 #include "relgeo/linear/scalar_traits.h"
 
 namespace relgeo {
 
 namespace internal {
+/// v == 0 exactly (a scalar of the linear area is never an interval).
 template <class S>
 bool is_zero(const S& v) {
-  return Scalar_traits<S>::is_zero(v);
+  return certified_sign(v) == Certified_sign::zero;
 }
 }  // namespace internal
 
@@ -94,11 +96,38 @@ struct Lu_decomposition {
 
 namespace internal {
 
+/// The input checks of the area's entry points, each naming `who`:
+/// Invalid_input unless `a` is square, unless it is not empty (code
+/// empty_input), unless the right-hand side has a.rows() entries;
+/// Non_finite_input naming the first NaN or infinite entry.
+template <class Matrix>
+void require_square(const Matrix& a, const char* who) {
+  if (a.rows() != a.cols())
+    throw Invalid_input(std::string(who) + ": the matrix is " + std::to_string(a.rows()) + " x " +
+                        std::to_string(a.cols()) + ", not square");
+}
+template <class Matrix>
+void require_not_empty(const Matrix& a, const char* who) {
+  if (a.rows() == 0) throw Invalid_input(std::string(who) + ": empty matrix", Error_code::empty_input);
+}
+template <class Matrix, class Vector>
+void require_rhs_rows(const Matrix& a, const Vector& b, const char* who) {
+  if (b.size() != a.rows())
+    throw Invalid_input(std::string(who) + ": the matrix has " + std::to_string(a.rows()) +
+                        " rows but the right-hand side has " + std::to_string(b.size()) + " entries");
+}
+template <class S>
+void require_finite_rhs(const Dense_vector<S>& b, const char* who) {
+  for (Eigen::Index i = 0; i < b.size(); ++i)
+    if (!is_finite_number(b(i)))
+      throw Non_finite_input(std::string(who) + ": right-hand side entry " + std::to_string(i) +
+                             " is NaN or infinite");
+}
 template <class S>
 void require_finite_entries(const Dense_matrix<S>& a, const char* who) {
   for (Eigen::Index j = 0; j < a.cols(); ++j)
     for (Eigen::Index i = 0; i < a.rows(); ++i)
-      if (!Scalar_traits<S>::is_finite(a(i, j)))
+      if (!is_finite_number(a(i, j)))
         throw Non_finite_input(std::string(who) + ": entry (" + std::to_string(i) + ", " +
                                std::to_string(j) + ") is NaN or infinite");
 }
@@ -106,9 +135,23 @@ void require_finite_entries(const Dense_matrix<S>& a, const char* who) {
 /// |v| compared without rounding: a < b on magnitudes.
 template <class S>
 bool magnitude_less(const S& a, const S& b) {
-  if constexpr (std::is_same_v<S, mpq_class>) return mpz_cmpabs_ui(a.get_num_mpz_t(), 0) == 0 ? sgn(b) != 0 : abs(a) < abs(b);
-  else if constexpr (Is_mpfr_number<S>::value) return mpfr_cmpabs(a.get(), b.get()) < 0;
+  if constexpr (Number_traits<S>::kind == Number_kind::rational)
+    return mpz_cmpabs_ui(a.get_num_mpz_t(), 0) == 0 ? sgn(b) != 0 : abs(a) < abs(b);
+  else if constexpr (Number_traits<S>::kind == Number_kind::mpfr) return mpfr_cmpabs(a.get(), b.get()) < 0;
   else return std::abs(a) < std::abs(b);
+}
+
+/// max |a(i,j)| over the entries on and above the diagonal (`upper`) or over
+/// all, as the nearest double: the largest entry is found by exact
+/// comparisons and rounded once (rounding is monotone, so this is the largest
+/// of the rounded magnitudes).
+template <class S>
+double largest_magnitude(const Dense_matrix<S>& a, bool upper) {
+  const S* best = nullptr;
+  for (Eigen::Index j = 0; j < a.cols(); ++j)
+    for (Eigen::Index i = 0; i < (upper ? std::min(j + 1, a.rows()) : a.rows()); ++i)
+      if (!best || magnitude_less(*best, a(i, j))) best = &a(i, j);
+  return best ? std::abs(nearest_double(*best)) : 0.0;
 }
 
 }  // namespace internal
@@ -134,10 +177,8 @@ bool magnitude_less(const S& a, const S& b) {
 template <class S>
 Lu_decomposition<S> lu_decompose(Dense_matrix<S> a, Pivoting pivoting) {
   const Eigen::Index n = a.rows();
-  if (a.cols() != n)
-    throw Invalid_input("Gaussian elimination: the matrix is " + std::to_string(a.rows()) + " x " +
-                        std::to_string(a.cols()) + ", not square");
-  if (n == 0) throw Invalid_input("Gaussian elimination: empty matrix", Error_code::empty_input);
+  internal::require_square(a, "Gaussian elimination");
+  internal::require_not_empty(a, "Gaussian elimination");
   internal::require_finite_entries(a, "Gaussian elimination");
 
   Lu_decomposition<S> f;
@@ -146,9 +187,7 @@ Lu_decomposition<S> lu_decompose(Dense_matrix<S> a, Pivoting pivoting) {
   f.column_order.resize(static_cast<std::size_t>(n));
   std::iota(f.row_order.begin(), f.row_order.end(), Eigen::Index{0});
   std::iota(f.column_order.begin(), f.column_order.end(), Eigen::Index{0});
-  double max_a = 0;
-  for (Eigen::Index j = 0; j < n; ++j)
-    for (Eigen::Index i = 0; i < n; ++i) max_a = std::max(max_a, Scalar_traits<S>::magnitude(a(i, j)));
+  const double max_a = internal::largest_magnitude(a, false);
 
   // Complete pivoting: the search for step k+1 runs over the trailing block
   // while step k updates it, column by column in the same (column-major)
@@ -169,11 +208,11 @@ Lu_decomposition<S> lu_decompose(Dense_matrix<S> a, Pivoting pivoting) {
         pr = next_r, pc = next_c;
       }
     }
-    if (Scalar_traits<S>::is_zero(a(pr, pc))) {
-      const bool exact = Scalar_traits<S>::is_exact && pivoting != Pivoting::none;
+    if (internal::is_zero(a(pr, pc))) {
+      const bool exact = Number_traits<S>::is_exact && pivoting != Pivoting::none;
       std::string what = "Gaussian elimination (" +
                          std::string(pivoting == Pivoting::none ? "no" : to_string(pivoting)) + " pivoting, " +
-                         Scalar_traits<S>::name() + "): zero pivot at step " +
+                         Number_traits<S>::name() + "): zero pivot at step " +
                          std::to_string(k) + " of " + std::to_string(n);
       if (exact) what += ": the matrix is exactly singular (rank " + std::to_string(k) + ")";
       else if (pivoting == Pivoting::none) what += " (the matrix may be nonsingular: use pivoting)";
@@ -198,7 +237,7 @@ Lu_decomposition<S> lu_decompose(Dense_matrix<S> a, Pivoting pivoting) {
       S* col = &a(0, j);
       const S* l = &a(0, k);
       bool skip = false;
-      if constexpr (Scalar_traits<S>::is_exact) skip = internal::is_zero(akj);  // an exact no-op
+      if constexpr (Number_traits<S>::is_exact) skip = internal::is_zero(akj);  // an exact no-op
       // (rounding scalars do the update anyway: inf * 0 = NaN must show)
       if (!skip)
         for (Eigen::Index i = k + 1; i < n; ++i) col[i] -= S(l[i] * akj);
@@ -213,9 +252,7 @@ Lu_decomposition<S> lu_decompose(Dense_matrix<S> a, Pivoting pivoting) {
       }
     }
   }
-  double max_u = 0;
-  for (Eigen::Index j = 0; j < n; ++j)
-    for (Eigen::Index i = 0; i <= j; ++i) max_u = std::max(max_u, Scalar_traits<S>::magnitude(a(i, j)));
+  const double max_u = internal::largest_magnitude(a, true);
   f.growth_factor = max_a > 0 ? max_u / max_a : 1.0;
   f.lu = std::move(a);
   return f;
@@ -233,7 +270,7 @@ Dense_vector<S> Lu_decomposition<S>::solve(const Dense_vector<S>& b) const {
   // updates b in the thesis' program: b(i) -= l(i,k) * b(k)).
   for (Eigen::Index k = 0; k < n; ++k) {
     const S yk = y(k);
-    if constexpr (Scalar_traits<S>::is_exact)
+    if constexpr (Number_traits<S>::is_exact)
       if (internal::is_zero(yk)) continue;
     for (Eigen::Index i = k + 1; i < n; ++i) y(i) -= S(lu(i, k) * yk);
   }
@@ -255,13 +292,8 @@ Dense_vector<S> Lu_decomposition<S>::solve(const Dense_vector<S>& b) const {
 template <class S>
 Dense_vector<S> gaussian_elimination(const Dense_matrix<S>& a, const Dense_vector<S>& b,
                                      Pivoting pivoting) {
-  if (a.rows() != b.size())
-    throw Invalid_input("Gaussian elimination: the matrix has " + std::to_string(a.rows()) +
-                        " rows but the right-hand side has " + std::to_string(b.size()) + " entries");
-  for (Eigen::Index i = 0; i < b.size(); ++i)
-    if (!Scalar_traits<S>::is_finite(b(i)))
-      throw Non_finite_input("Gaussian elimination: right-hand side entry " + std::to_string(i) +
-                             " is NaN or infinite");
+  internal::require_rhs_rows(a, b, "Gaussian elimination");
+  internal::require_finite_rhs(b, "Gaussian elimination");
   return lu_decompose<S>(a, pivoting).solve(b);
 }
 

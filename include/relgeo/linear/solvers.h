@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/core/number_traits.h"
 #include "relgeo/linear/gaussian_elimination.h"
 #include "relgeo/linear/scalar_traits.h"
 
@@ -59,9 +60,9 @@ template <class S, class Lu>
 void require_nonzero_pivots(const Lu& lu, const char* who, bool pivoting_proves_rank) {
   const auto& m = lu.matrixLU();
   for (Eigen::Index k = 0; k < m.rows(); ++k)
-    if (Scalar_traits<S>::is_zero(m(k, k))) {
-      const bool exact = Scalar_traits<S>::is_exact && pivoting_proves_rank;
-      throw Singular_matrix(std::string(who) + " (" + Scalar_traits<S>::name() + "): zero pivot at step " +
+    if (is_zero(m(k, k))) {
+      const bool exact = Number_traits<S>::is_exact && pivoting_proves_rank;
+      throw Singular_matrix(std::string(who) + " (" + Number_traits<S>::name() + "): zero pivot at step " +
                                 std::to_string(k) + " of " + std::to_string(m.rows()) +
                                 (exact ? ": the matrix is exactly singular"
                                        : ": the matrix is singular to the working precision"),
@@ -86,17 +87,11 @@ Dense_vector<S> solve_linear_system(const Dense_matrix<S>& a, const Dense_vector
     default: break;
   }
   // Same input checks as relgeo's own elimination.
-  if (a.rows() != a.cols())
-    throw Invalid_input("Eigen LU: the matrix is " + std::to_string(a.rows()) + " x " +
-                        std::to_string(a.cols()) + ", not square");
-  if (a.rows() == 0) throw Invalid_input("Eigen LU: empty matrix", Error_code::empty_input);
-  if (a.rows() != b.size())
-    throw Invalid_input("Eigen LU: the matrix has " + std::to_string(a.rows()) +
-                        " rows but the right-hand side has " + std::to_string(b.size()) + " entries");
+  internal::require_square(a, "Eigen LU");
+  internal::require_not_empty(a, "Eigen LU");
+  internal::require_rhs_rows(a, b, "Eigen LU");
   internal::require_finite_entries(a, "Eigen LU");
-  for (Eigen::Index i = 0; i < b.size(); ++i)
-    if (!Scalar_traits<S>::is_finite(b(i)))
-      throw Non_finite_input("Eigen LU: right-hand side entry " + std::to_string(i) + " is NaN or infinite");
+  internal::require_finite_rhs(b, "Eigen LU");
   if (method == Linear_solver::eigen_partial_piv_lu) {
     const Eigen::PartialPivLU<Dense_matrix<S>> lu(a);
     internal::require_nonzero_pivots<S>(lu, "Eigen::PartialPivLU", true);
@@ -109,7 +104,7 @@ Dense_vector<S> solve_linear_system(const Dense_matrix<S>& a, const Dense_vector
   } else {
     // Eigen::FullPivLU builds RealScalar(Index); Mpfr_number's constructors
     // from int and double make that ambiguous.
-    throw Invalid_input("Eigen::FullPivLU is not available for scalar " + Scalar_traits<S>::name() +
+    throw Invalid_input("Eigen::FullPivLU is not available for scalar " + Number_traits<S>::name() +
                         " (it needs a constructor from Eigen::Index)");
   }
 }

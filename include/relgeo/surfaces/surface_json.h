@@ -1,6 +1,6 @@
 // relgeo/surfaces/surface_json.h — a small JSON format for NURBS surfaces,
-// curves, trimmed faces and surface models (nlohmann-json; link
-// nlohmann_json::nlohmann_json).
+// curves, trimmed faces and surface models (nlohmann-json through relgeo/io:
+// link relgeo::io).
 //
 // Format (doc/joining.md, "JSON surface format"); numbers are JSON numbers
 // (read as doubles, written so that they read back bit for bit):
@@ -19,18 +19,21 @@
 //          plus optional "reversed": bool and "edge": index into "edges".
 //
 // Reading validates everything (the constructors' typed errors); a file that
-// is not JSON, or lacks a field, is Unreadable_file naming the field.
+// is missing or not JSON is relgeo/io's Unreadable_file / io::Parse_error
+// (with the line), one that lacks a field Unreadable_file naming the field, a
+// number beyond double's range Non_finite_input.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
-#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/io/json.h"
+#include "relgeo/io/text_file.h"
 #include "relgeo/surfaces/nurbs_curve.h"
 #include "relgeo/surfaces/nurbs_surface.h"
 #include "relgeo/surfaces/surface_model.h"
@@ -238,16 +241,10 @@ inline nlohmann::json to_json(const Surface_model& m) {
 }
 
 /// Reads a surface model file. \throws Unreadable_file (missing file, not
-/// JSON, missing field), or the typed errors of invalid data.
+/// JSON: io::Parse_error with the line, missing field), Non_finite_input, or
+/// the typed errors of invalid data.
 inline Surface_model read_surface_model_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Unreadable_file("cannot open surface file '" + path + "'");
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const nlohmann::json::exception& e) {
-    throw Unreadable_file("surface file '" + path + "' is not JSON: " + e.what());
-  }
+  const nlohmann::json j = io::parse_json(io::read_text_file(path, "surface file"), path);
   try {
     return surface_model_from_json(j, path);
   } catch (const nlohmann::json::exception& e) {
@@ -261,11 +258,8 @@ inline Surface_model read_surface_model_json(const std::string& path) {
 /// \throws Unreadable_file (missing, not JSON, missing field), Invalid_input
 /// for an edge index the model does not have.
 inline void read_edge_curves_json(const std::string& path, Surface_model& m) {
-  std::ifstream in(path);
-  if (!in) throw Unreadable_file("cannot open curve file '" + path + "'");
-  nlohmann::json j;
+  const nlohmann::json j = io::parse_json(io::read_text_file(path, "curve file"), path);
   try {
-    in >> j;
     const auto& edges = internal::json_field(j, "edges", path);
     if (!edges.is_array()) throw Unreadable_file(path + ": 'edges' must be an array");
     for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -285,10 +279,9 @@ inline void read_edge_curves_json(const std::string& path, Surface_model& m) {
   }
 }
 
+/// Writes a surface model file. \throws io::Unwritable_file.
 inline void write_surface_model_json(const Surface_model& m, const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw Unreadable_file("cannot write surface file '" + path + "'");
-  out << to_json(m).dump(1) << "\n";
+  io::write_text_file(path, to_json(m).dump(1) + "\n", "surface file");
 }
 
 }  // namespace relgeo

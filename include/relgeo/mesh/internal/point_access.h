@@ -6,9 +6,10 @@
 // accessors. Coordinates are combined in the point's own number type FT.
 #pragma once
 
-#include <cmath>
 #include <type_traits>
+#include <utility>
 
+#include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/point.h"
 
 namespace relgeo::internal {
@@ -37,25 +38,18 @@ struct Point_access<P> {
   static P make(const FT& x, const FT& y, const FT& z) { return P(x, y, z); }
 };
 
-/// Conversion of a coordinate to double: exact types round to nearest,
-/// intervals give their midpoint.
+/// A coordinate as the nearest double (an interval's midpoint): the number
+/// layer's nearest_double.
 template <class FT>
 double coordinate_to_double(const FT& v) {
-  if constexpr (std::is_arithmetic_v<FT>) return static_cast<double>(v);
-  else if constexpr (requires { v.inf(); v.sup(); }) return 0.5 * v.inf() + 0.5 * v.sup();
-  else if constexpr (requires { v.get_d(); }) return v.get_d();
-  else if constexpr (requires { v.to_double(); }) return v.to_double();
-  else return to_double(v);  // found by ADL (CGAL::to_double for CGAL number types)
+  return nearest_double(v);
 }
 
-/// Whether a coordinate is finite (NaN and infinities are not; exact and
-/// MPFR values are finite unless their own NaN test says otherwise).
+/// Whether a coordinate is finite: no NaN or infinity (an interval neither in
+/// an endpoint); rationals and CGAL's exact types always are.
 template <class FT>
 bool coordinate_is_finite(const FT& v) {
-  if constexpr (std::is_floating_point_v<FT>) return std::isfinite(v);
-  else if constexpr (requires { v.inf(); v.sup(); }) return std::isfinite(v.inf()) && std::isfinite(v.sup());
-  else if constexpr (requires { v.is_nan(); }) return !v.is_nan();
-  else return true;
+  return is_finite_number(v);
 }
 
 template <class P>

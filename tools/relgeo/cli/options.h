@@ -1,0 +1,55 @@
+// tools/relgeo/cli/options.h — how a command is registered and the option
+// blocks every command shares (CLI11). Each commands/<command>/options.cpp
+// declares its options with these helpers; main.cpp registers each command in
+// one line (add_command).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "cli/text.h"
+
+namespace relgeo::tool {
+
+/// Runs a parsed command on the streams; returns the exit code.
+using Command_runner = std::function<int(Streams)>;
+
+/// --format json|text (default text).
+void add_format_option(CLI::App& cmd, Format& format);
+
+/// --kernel KERNEL. `default_kernel` empty: the command decides what no
+/// kernel means (said in `help`).
+void add_kernel_option(CLI::App& cmd, std::string& kernel, std::string_view default_kernel, std::string_view help = {});
+
+/// `--FLAG FILE` and the positional FILE (FLAG without dashes, e.g. "input"),
+/// both filling `file`. \throws Usage_error (while parsing) when both are given.
+void add_file_operand(CLI::App& cmd, std::string& file, const std::string& flag, const std::string& help);
+
+/// --FLAG FILE for an output picture/report (empty: none).
+void add_output_option(CLI::App& cmd, std::string& file, const std::string& flag, const std::string& help);
+
+/// A registered command: its CLI11 subcommand and what runs it once parsed.
+struct Registered_command {
+  CLI::App* cmd;
+  Command_runner run;
+};
+
+/// Adds the subcommand `name` (one-line summary, help footer), lets
+/// `declare` put its options on it, bound to an Options object that lives as
+/// long as the runner, and returns the runner calling `run(options, streams)`.
+template <class Options>
+Registered_command add_command(CLI::App& app, const std::string& name, const std::string& summary,
+                               const std::string& footer, void (*declare)(CLI::App&, Options&),
+                               int (*run)(const Options&, Streams)) {
+  CLI::App* cmd = app.add_subcommand(name, summary);
+  cmd->footer(footer);
+  auto options = std::make_shared<Options>();
+  declare(*cmd, *options);
+  return {cmd, [options, run](Streams io) { return run(*options, io); }};
+}
+
+}  // namespace relgeo::tool

@@ -1,0 +1,56 @@
+// tools/relgeo/commands/subdivide/dispatch_float.cpp — run_subdivision under
+// the kernels with float, double or long double coordinates, the kernel list
+// of `subdivide`, and the dyadic sample grid. The interval, exact and MPFR
+// kernels are in dispatch_exact.cpp.
+#include "cli/text.h"
+#include "commands/subdivide/run_with.h"
+
+namespace relgeo::tool {
+
+namespace {
+
+template <std::size_t... I>
+std::vector<std::string> admitted_names(std::index_sequence<I...>) {
+  std::vector<std::string> names;
+  const auto& registry = kernel_registry();
+  ((Subdivision_float_kernels::admits<kernel_at<I>> || Subdivision_exact_kernels::admits<kernel_at<I>>
+        ? names.push_back(registry[I].label())
+        : void()),
+   ...);
+  return names;
+}
+
+}  // namespace
+
+const std::vector<std::string>& subdivision_kernel_names() {
+  static const std::vector<std::string> names = admitted_names(std::make_index_sequence<kernel_count>{});
+  return names;
+}
+
+void validate_subdivision_kernel(const std::string& name) {
+  const Kernel_entry& k = find_kernel(name);  // unknown names: the tool's usual message
+  for (const auto& n : subdivision_kernel_names())
+    if (n == k.label()) return;
+  std::string list;
+  for (const auto& n : subdivision_kernel_names()) list += (list.empty() ? "" : ", ") + n;
+  throw Usage_error("kernel '" + name + "' is not supported by subdivide (its constructions are needed; supported: " +
+                    list + ")");
+}
+
+std::vector<std::pair<double, double>> dyadic_samples(int n) {
+  if (n <= 0 || (n & (n - 1)) != 0) throw Usage_error("--samples must be a power of two (or 0)");
+  std::vector<std::pair<double, double>> g;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i + j <= n; ++i) g.push_back({double(i) / n, double(j) / n});
+  return g;
+}
+
+Subdivision_result run_subdivision(const Mesh_double& input, const Subdivision_request& rq) {
+  validate_subdivision_kernel(rq.kernel);
+  const Kernel_entry& k = find_kernel(rq.kernel);
+  Subdivision_result r;
+  if (run_subdivision_exact_kernels(input, rq, r)) return r;
+  return with_kernel<Subdivision_float_kernels>(k, [&]<class K>(const K&) { return run_subdivision_with<K>(input, rq); });
+}
+
+}  // namespace relgeo::tool

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <string>
 #include <utility>
@@ -47,6 +48,10 @@ struct Join_command_options {
   /// Kernel of the certified checks: failsafe, interval, filtered, exact.
   std::string kernel = "filtered";
   Join_options join{};
+  /// Error criteria: a result with a face whose absolute error or
+  /// normal-vector error (after joining) exceeds them is "failed" [none].
+  double max_absolute_error = std::numeric_limits<double>::infinity();
+  double max_normal_error = std::numeric_limits<double>::infinity();
 #ifdef RELGEO_HAS_OCCT
   Occt_sewing_options occt{};
 #endif
@@ -56,15 +61,20 @@ struct Join_command_options {
 struct Join_command_report {
   /// "ok": conforming, watertight seams, no flipped, degenerate or
   /// overlapping triangle in any face's (u,v) domain; "failed" otherwise
-  /// (naive sewing on a folding input, for instance): `failure` says why.
+  /// (naive sewing on a folding input, for instance), or an error above the
+/// criteria of the options: `failure` says why.
   std::string status = "ok";
   std::string failure;
   std::string surface, output;
   std::vector<std::string> meshes;
   std::size_t faces = 0;
   Join_report report;
-  /// The joined mesh (also written to `output` when given).
+  /// The joined mesh (also written to `output` when given) and the model
+  /// face of each of its triangles.
   Triangle_mesh<Point_3<double>> mesh;
+  std::vector<Index> face_of_triangle;
+  /// The surface model as joined (edge curves from `curves` included).
+  Surface_model model;
 };
 
 /// Reads the surface model of a file (by extension). \throws Unreadable_file,
@@ -106,6 +116,8 @@ Join_command_report run_join_with(const Join_command_options& o) {
   }
   r.report = std::move(result.report);
   r.mesh = std::move(result.mesh);
+  r.face_of_triangle = std::move(result.face_of_triangle);
+  r.model = std::move(model);
   const auto fail = [&](const std::string& why) {
     if (r.status == "ok") r.status = "failed", r.failure = why;
   };
@@ -116,6 +128,8 @@ Join_command_report run_join_with(const Join_command_options& o) {
     if (f.orientation_after.degenerate) fail("degenerate-triangles");
     if (f.overlaps_after) fail("overlapping-triangles");
     if (f.orientation_after.undecided || f.overlaps_undecided_after) fail("undecided");
+    if (f.after.absolute > o.max_absolute_error) fail("absolute-error");
+    if (f.after.normal_vector > o.max_normal_error) fail("normal-vector-error");
   }
   if (!o.output.empty()) write_mesh(o.output, r.mesh);
   return r;

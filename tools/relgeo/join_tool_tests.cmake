@@ -1,7 +1,7 @@
-# Tool tests of `relgeo join` (included
+# Tool tests of `relgeo join` and the "joining" experiment section (included
 # from CMakeLists.txt inside if(RELGEO_BUILD_TESTS), with relgeo_tool_test and
 # _tmp defined there). Inputs in testdata/, made by the library
-# (relgeo/joining/test_models.h):
+# (relgeo/joining/test_models.h, as the joining section's inputs are):
 #   join_folding.json, join_folding_{0,1}.off  folding_case(): two planes,
 #       patch 0 with a thin strip along the seam, patch 1 overlapping it
 #   join_folding_far.off  patch 0 moved 3 along x: beyond face 0's domain
@@ -85,3 +85,15 @@ relgeo_tool_test(join_bad_method 2 ARGS join ${_fold} --method glue --output ${_
 relgeo_tool_test(join_kernel_not_certified 2 ARGS join ${_fold} --kernel double --output ${_tmp}/join/x.off
   STDERR_MATCHES "not supported by join")
 relgeo_tool_test(join_unknown_kernel 2 ARGS join ${_fold} --kernel quadruple --output ${_tmp}/join/x.off)
+
+relgeo_tool_test(experiment_quick_joining 0
+  ARGS experiment --quick --quiet --only joining --output ${_tmp}/results_joining
+  STDOUT_MATCHES "folding +naive .* [1-9][0-9]* +[1-9][0-9]* +closed +failed \\(flipped-triangles\\)"
+                 "folding +whitney .* 0 +0 +closed +ok"
+                 "two-faces-curve +whitney .* 0 +0 +closed +ok"
+                 "three-faces-median +whitney .* ok" "cylinder-plane +whitney .* ok"
+  FILES ${_tmp}/results_joining/joining.json
+        ${_tmp}/results_joining/joining/folding_naive.svg
+        ${_tmp}/results_joining/joining/folding_whitney.svg
+        ${_tmp}/results_joining/joining/inputs/folding.json
+  JSON_FILES ${_tmp}/results_joining/joining.json)

@@ -3,6 +3,8 @@
 // each method; typed errors for bad files and options.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -78,6 +80,32 @@ TEST_F(JoinCommand, NaiveSewingOfTheFoldingInputFails) {
   EXPECT_EQ(r.failure, "flipped-triangles");
   o.method = "whitney";
   EXPECT_EQ(run_join(o).status, "ok");
+}
+
+TEST_F(JoinCommand, ErrorCriteriaAndTheFacesOfTheTriangles) {
+  Join_command_options o = write_case(make_joining_case("two faces", two_face_model(true)));
+  const Join_command_report r = run_join(o);
+  ASSERT_EQ(r.status, "ok") << r.failure;
+  ASSERT_EQ(r.face_of_triangle.size(), r.mesh.faces.size());
+  for (std::size_t f = 0; f < 2; ++f)
+    EXPECT_GT(std::count(r.face_of_triangle.begin(), r.face_of_triangle.end(), static_cast<Index>(f)), 0);
+  EXPECT_EQ(r.model.faces.size(), 2u);
+  double nve = 0, abs = 0;
+  for (const Join_face_report& f : r.report.faces) nve = std::max(nve, f.after.normal_vector), abs = std::max(abs, f.after.absolute);
+  ASSERT_GT(nve, 0);
+  ASSERT_GT(abs, 0);
+  // Criteria at the result's own errors pass; just below them fail.
+  o.max_normal_error = nve, o.max_absolute_error = abs;
+  EXPECT_EQ(run_join(o).status, "ok");
+  o.max_normal_error = std::nextafter(nve, 0.0);
+  const Join_command_report n = run_join(o);
+  EXPECT_EQ(n.status, "failed");
+  EXPECT_EQ(n.failure, "normal-vector-error");
+  o.max_normal_error = nve, o.max_absolute_error = std::nextafter(abs, 0.0);
+  const Join_command_report a = run_join(o);
+  EXPECT_EQ(a.status, "failed");
+  EXPECT_EQ(a.failure, "absolute-error");
+  EXPECT_EQ(to_json(a)["failure"], "absolute-error");
 }
 
 #ifdef RELGEO_HAS_OCCT

@@ -26,6 +26,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libstb-dev
   libopenmesh-dev
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
   chromium            # the browser test of the experiment report (tool_experiment_report_in_browser)
 )
 

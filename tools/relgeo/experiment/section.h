@@ -117,6 +117,10 @@ Section_report extrusion_section(const Experiment_context& ctx);  // experiment/
 /// meshes to the exact limit surface per level and kernel, error bounds.
 Section_report subdivision_section(const Experiment_context& ctx);  // experiment/subdivision.cpp
 
+/// Joining mesh patches to trimmed NURBS faces (thesis Ch. 4): naive sewing
+/// against the Whitney joiner, errors before/after, certified fold counts.
+Section_report joining_section(const Experiment_context& ctx);  // experiment/joining.cpp
+
 /// Mesh Booleans (thesis Ch. 5): everyday cases under every kernel, validated
 /// and compared with CGAL's corefinement on Epeck.
 Section_report boolean_section(const Experiment_context& ctx);  // experiment/boolean.cpp
@@ -138,6 +142,9 @@ inline constexpr Experiment_section experiment_sections[] = {
     {"subdivision", "Loop subdivision: distance of control and limit meshes to the exact limit surface "
                     "per level 0..4 and kernel, error bounds (soundness, tightness), pictures",
      &subdivision_section},
+    {"joining", "joining mesh patches to trimmed NURBS faces: naive midpoint sewing vs the Whitney joiner, "
+                "absolute and normal-vector errors before/after, certified flipped triangles, (u,v) pictures",
+     &joining_section},
     {"boolean", "mesh Booleans: general position, shared faces and edges, nested and identical operands under "
                 "every kernel: validity, volume against CGAL's corefinement (Epeck), time, pictures",
      &boolean_section},

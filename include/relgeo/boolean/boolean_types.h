@@ -13,6 +13,7 @@
 #include "relgeo/core/errors.h"
 #include "relgeo/kernel/point.h"
 #include "relgeo/mesh/mesh_errors.h"
+#include "relgeo/mesh/solid_validation.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo {
@@ -50,6 +51,14 @@ struct Boolean_options {
   /// its own exact points. False: the kernel's own arithmetic throughout
   /// (Exact_kernel: GMP rationals everywhere, the reference path).
   bool use_double_point_kernel = true;
+  /// Validate the output mesh (validate_solid on its doubles, exact
+  /// predicates whatever the kernel): Boolean_result::validation. Rounding
+  /// to doubles can make an exact result touch or cross itself; the report
+  /// says so and where.
+  bool validate_output = true;
+  /// Options of that validation (the exact volume string is off by default:
+  /// it can be long).
+  Solid_validation_options validation{.exact_volume_string = false};
 };
 
 /// An operand is not a valid solid boundary: which one ("A" or "B") and
@@ -73,7 +82,9 @@ struct Face_origin {
 
 /// Seconds spent in each phase.
 struct Boolean_timing {
-  double check = 0, broad_phase = 0, narrow_phase = 0, retriangulation = 0, labelling = 0, assembly = 0;
+  double check = 0, broad_phase = 0, narrow_phase = 0, retriangulation = 0, labelling = 0, assembly = 0,
+         validation = 0;
+  /// The Boolean itself: every phase but the output's validation.
   double total() const { return check + broad_phase + narrow_phase + retriangulation + labelling + assembly; }
 };
 
@@ -112,6 +123,9 @@ struct Boolean_result {
   std::size_t perturbations = 0;
   Boolean_counts counts;
   Boolean_timing time;
+  /// The validation report of `mesh` (Boolean_options::validate_output;
+  /// empty kernel name when not run).
+  Solid_report validation;
 
   bool ok() const { return status == Status::ok; }
 };

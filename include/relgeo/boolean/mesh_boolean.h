@@ -5,7 +5,7 @@
 // The phases (Boolean_timing names them):
 //  1. check     operands are closed, oriented 2-manifolds with finite
 //               coordinates, no degenerate face and no self-intersection;
-//  2. broad     face pairs whose boxes overlap (broad_phase.h);
+//  2. broad     face pairs whose boxes overlap (two Face_bvh hierarchies);
 //  3. narrow    each pair intersected exactly (intersect_triangles): new
 //               vertices are implicit points, and the same point reached from
 //               several pairs becomes one vertex (sorted by compare_xyz);
@@ -16,7 +16,8 @@
 //               decision per patch between curves (labelling.h);
 //  6. assembly  the pieces the operation keeps, those of B flipped for a
 //               difference, coplanar overlaps kept once, vertices rounded to
-//               doubles with the kernel's stated error.
+//               doubles with the kernel's stated error;
+//  7. validation  validate_solid on the output's doubles (exact tests).
 // Degenerate input is the normal case: shared vertices and edges, touching,
 // coplanar overlapping faces, identical operands are decided exactly under
 // exact kernels, and the result is regularised (coplanar pieces of opposite
@@ -36,14 +37,15 @@
 #include <vector>
 
 #include "relgeo/boolean/boolean_types.h"
-#include "relgeo/boolean/internal/broad_phase.h"
 #include "relgeo/boolean/internal/face_triangulation.h"
 #include "relgeo/boolean/internal/labelling.h"
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
+#include "relgeo/mesh/face_bvh.h"
 #include "relgeo/mesh/mesh_topology.h"
+#include "relgeo/mesh/self_intersection.h"
 #include "relgeo/mesh/validity.h"
 
 namespace relgeo {
@@ -70,8 +72,8 @@ class Boolean_engine {
     r.time.check = clock.lap();
     load_points();
     std::vector<std::pair<Index, Index>> pairs;
-    for_each_overlapping_pair(face_boxes(*mesh_[0]), face_boxes(*mesh_[1]),
-                              [&](Index fa, Index fb) { pairs.emplace_back(fa, fb); });
+    Face_bvh(*mesh_[0]).for_each_overlapping_pair(Face_bvh(*mesh_[1]),
+                                                  [&](Index fa, Index fb) { pairs.emplace_back(fa, fb); });
     r.counts.candidate_pairs = pairs.size();
     r.time.broad_phase = clock.lap();
     if (!narrow_phase(pairs, r)) return finish_failed(r, clock, &Boolean_timing::narrow_phase);
@@ -82,6 +84,8 @@ class Boolean_engine {
     r.time.labelling = clock.lap();
     assemble(r);
     r.time.assembly = clock.lap();
+    if (options_.validate_output) r.validation = validate_solid<Check_kernel>(r.mesh, options_.validation);
+    r.time.validation = clock.lap();
     return r;
   }
 
@@ -108,52 +112,10 @@ class Boolean_engine {
   using Check_kernel = Filtered_exact_kernel;
 
   void check_operand(const Mesh& m, const char* name) const {
-    Mesh_report report = check_mesh<Check_kernel>(m);
+    // check_solid adds the exact self-intersection test (Face_bvh pairs,
+    // pairs sharing a vertex or an edge allowed exactly that) to check_mesh.
+    Mesh_report report = options_.check_self_intersections ? check_solid<Check_kernel>(m) : check_mesh<Check_kernel>(m);
     if (!report.is_valid()) throw Invalid_operand(name, std::move(report.issues));
-    if (options_.check_self_intersections) {
-      std::vector<Mesh_issue> issues;
-      for (const auto& [f, g] : self_intersecting_pairs(m)) issues.push_back({Mesh_defect::self_intersection, {f, g}});
-      if (!issues.empty()) throw Invalid_operand(name, std::move(issues));
-    }
-  }
-
-  // Pairs of faces meeting other than in what they share (vertices, edge), exactly.
-  static std::vector<std::pair<Index, Index>> self_intersecting_pairs(const Mesh& m) {
-    const Check_kernel k;
-    const auto point = k.construct_point_3_object();
-    const auto triangle_of = [&](Index f) {
-      std::array<Check_kernel::Point_3, 3> t;
-      for (int i = 0; i < 3; ++i) {
-        const Point_3<double>& v = m.vertices[m.faces[f][i]];
-        t[i] = point(v.x, v.y, v.z);
-      }
-      return t;
-    };
-    std::vector<std::pair<Index, Index>> out;
-    const auto boxes = face_boxes(m);
-    for_each_overlapping_pair(boxes, boxes, [&](Index f, Index g) {
-      if (f >= g) return;
-      const Triangle& tf = m.faces[f];
-      const Triangle& tg = m.faces[g];
-      int shared = 0;
-      for (Index x : tf) shared += static_cast<int>(std::count(tg.begin(), tg.end(), x));
-      const auto r = intersect_triangles(triangle_of(f), triangle_of(g), k);
-      if (r.kind == Triangle_intersection_kind::disjoint) return;
-      // Allowed: exactly the shared vertex, or exactly the shared edge.
-      const bool only_shared = ((shared == 1 && r.kind == Triangle_intersection_kind::vertex_touch) ||
-                                (shared == 2 && r.kind == Triangle_intersection_kind::edge_touch)) &&
-                               all_points_are_shared_vertices(r, tf, tg);
-      if (!only_shared) out.emplace_back(f, g);
-    });
-    return out;
-  }
-  static bool all_points_are_shared_vertices(const Triangle_intersection<Check_kernel>& r, const Triangle& tf,
-                                             const Triangle& tg) {
-    for (const auto& l : r.locations) {
-      if (l[0].kind != Triangle_location::Kind::vertex || l[1].kind != Triangle_location::Kind::vertex) return false;
-      if (tf[l[0].index] != tg[l[1].index]) return false;
-    }
-    return true;
   }
 
   // ---- points -----------------------------------------------------------------
@@ -627,6 +589,7 @@ Boolean_result<K> with_exact_vertices(Boolean_result<Filtered_exact_kernel>&& r)
   out.perturbations = r.perturbations;
   out.counts = r.counts;
   out.time = r.time;
+  out.validation = std::move(r.validation);
   for (const auto& v : r.exact_vertices) {
     const auto c = Staged_implicit_policy::exact_coordinates(v);
     out.exact_vertices.push_back({Point_3<mpq_class>{c[0], c[1], c[2]}, v.kind});

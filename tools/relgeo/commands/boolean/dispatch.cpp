@@ -3,6 +3,7 @@
 #include "commands/boolean/facade.h"
 #include "kernels/dispatch.h"
 #include "relgeo/boolean.h"
+#include "relgeo/mesh/self_intersection.h"
 
 namespace relgeo::tool {
 namespace {
@@ -64,6 +65,15 @@ Boolean_run evaluate_boolean(const std::string& kernel, const Mesh_double& a, co
     run.provenance = r.provenance;
     run.counts = r.counts;
     run.time = r.time;
+    run.validation = r.validation;
+    if constexpr (requires { { r.exact_vertices[0].point } -> std::same_as<const Point_3<mpq_class>&>; }) {
+      if (r.ok()) {
+        Triangle_mesh<Point_3<mpq_class>> exact;
+        exact.faces = r.mesh.faces;
+        for (const auto& v : r.exact_vertices) exact.vertices.push_back(v.point);
+        run.exact_self_intersecting_pairs = find_self_intersections<K>(exact).pairs.size();
+      }
+    }
     return run;
   });
 }

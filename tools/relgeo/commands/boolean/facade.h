@@ -18,19 +18,8 @@ namespace relgeo::tool {
 const std::vector<std::string>& boolean_kernel_names();
 /// Throws Usage_error unless the kernel can run a Boolean.
 void validate_boolean_kernel(const std::string& name);
-/// union | intersection | difference | xor. \throws Usage_error otherwise.
+/// union | intersection | difference | xor. \throws Usage_error otherwise.  [options.cpp]
 Boolean_operation parse_boolean_operation(const std::string& name);
-
-/// Checks of a mesh: combinatorial and geometric figures of the output.
-struct Mesh_checks {
-  bool closed = false, manifold = false, oriented = false, no_degenerate_faces = false;
-  std::size_t boundary_edges = 0, non_manifold_edges = 0, non_manifold_vertices = 0, degenerate_faces = 0;
-  long euler_characteristic = 0;
-  std::size_t components = 0;
-  double volume = 0;  ///< signed, of the doubles (positive: outward)
-  std::optional<std::size_t> self_intersecting_pairs;  ///< exact test on the doubles (when asked)
-};
-Mesh_checks check_output(const Mesh_double& m, bool self_intersections);
 
 /// One Boolean under one kernel.
 struct Boolean_run {
@@ -46,6 +35,12 @@ struct Boolean_run {
   std::vector<Face_origin> provenance;
   Boolean_counts counts;
   Boolean_timing time;
+  /// validate_solid on the output's doubles (exact predicates).
+  Solid_report validation;
+  /// Exact_kernel only: self-intersecting face pairs of the result before
+  /// rounding (its exact vertices); tells rounding's crossings from the
+  /// Boolean's own.
+  std::optional<std::size_t> exact_self_intersecting_pairs;
 };
 /// \throws Invalid_operand for invalid operands (with their defects), Usage_error for a kernel that cannot.
 Boolean_run evaluate_boolean(const std::string& kernel, const Mesh_double& a, const Mesh_double& b, Boolean_operation op,

@@ -22,13 +22,24 @@ std::string boolean_help_footer() {
          "--oracle cgal: CGAL's corefinement with Epeck on the same operands: its volume, the volume of the "
          "symmetric difference of the two results (relgeo's exact Boolean) and their Hausdorff distance.\n"
          "\nJSON fields: operation, kernel, kernel_model, certified, status, failure, undecided_pairs, operands, "
-         "output, validation {closed, edge_manifold, vertex_manifold, oriented, no_degenerate_faces, "
-         "self_intersecting_pairs, euler_characteristic, components, volume, ...}, rounding_error, perturbations, "
+         "output, validation (validate_solid on the output's doubles: valid_solid, summary, checks {closed, "
+         "edge_manifold, vertex_manifold, consistently_oriented, self_intersection_free, outward_oriented, ...: "
+         "status, count, where}, euler_characteristic, components, genus, volume {value, exact, lower, upper}), "
+         "exact_self_intersecting_pairs (exact kernel: before rounding), rounding_error, perturbations, "
          "largest_perturbation, counts, time_s {check, broad_phase, narrow_phase, retriangulation, labelling, "
-         "assembly, total}, [oracle].\n"
+         "assembly, total, validation}, [oracle].\n"
+         "Rounding the exact result to doubles can make it touch or cross itself (CGAL issue 9154): the "
+         "validation says so and where.\n"
          "A symmetric difference (xor) touches itself along the intersection curves: its non-manifold edges are "
          "expected.\n" +
          std::string(exit_codes_text);
+}
+
+Boolean_operation parse_boolean_operation(const std::string& name) {
+  for (Boolean_operation op : {Boolean_operation::union_of, Boolean_operation::intersection, Boolean_operation::difference,
+                               Boolean_operation::symmetric_difference})
+    if (name == to_string(op)) return op;
+  throw Usage_error("--op must be union, intersection, difference or xor (got '" + name + "')");
 }
 
 void declare_boolean_options(CLI::App& cmd, Boolean_command_options& o) {

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "relgeo/io/solid_report_json.h"
+
 namespace relgeo::tool {
 
 namespace {
@@ -21,7 +23,7 @@ io::Json operand(const std::string& file, const Mesh_double& m) {
 
 io::Json boolean_report_json(const Boolean_report_input& in) {
   const Boolean_run& r = *in.run;
-  const Mesh_checks& c = *in.checks;
+  const double volume = r.validation.volume.value;
   io::Json j;
   j["operation"] = in.operation;
   j["kernel"] = r.kernel;
@@ -36,21 +38,9 @@ io::Json boolean_report_json(const Boolean_report_input& in) {
   j["operands"] = {{"a", operand(in.input_a, *in.a)}, {"b", operand(in.input_b, *in.b)}};
   j["output"] = {{"vertices", r.output.vertices.size()}, {"faces", r.output.faces.size()},
                  {"creases", r.output.tags.creases().size()}};
-  io::Json v;
-  v["closed"] = c.closed;
-  v["edge_manifold"] = c.non_manifold_edges == 0;
-  v["vertex_manifold"] = c.non_manifold_vertices == 0;
-  v["oriented"] = c.oriented;
-  v["no_degenerate_faces"] = c.no_degenerate_faces;
-  v["self_intersecting_pairs"] = c.self_intersecting_pairs ? io::Json(*c.self_intersecting_pairs) : io::Json(nullptr);
-  v["euler_characteristic"] = c.euler_characteristic;
-  v["components"] = c.components;
-  v["volume"] = io::json_measure(c.volume);
-  v["boundary_edges"] = c.boundary_edges;
-  v["non_manifold_edges"] = c.non_manifold_edges;
-  v["non_manifold_vertices"] = c.non_manifold_vertices;
-  v["degenerate_faces"] = c.degenerate_faces;
-  j["validation"] = v;
+  j["validation"] = r.ok ? io::solid_report_json(r.validation) : io::Json(nullptr);
+  j["exact_self_intersecting_pairs"] =
+      r.exact_self_intersecting_pairs ? io::Json(*r.exact_self_intersecting_pairs) : io::Json(nullptr);
   j["rounding_error"] = io::json_measure(r.rounding_error);
   j["perturbations"] = r.perturbations;
   j["largest_perturbation"] = io::json_measure(r.largest_perturbation);
@@ -60,13 +50,13 @@ io::Json boolean_report_json(const Boolean_report_input& in) {
   j["time_s"] = {{"check", r.time.check},         {"broad_phase", r.time.broad_phase},
                  {"narrow_phase", r.time.narrow_phase}, {"retriangulation", r.time.retriangulation},
                  {"labelling", r.time.labelling}, {"assembly", r.time.assembly},
-                 {"total", r.time.total()}};
+                 {"total", r.time.total()},       {"validation", r.time.validation}};
   if (in.oracle) {
     const Oracle_comparison& o = *in.oracle;
     j["oracle"] = {{"cgal_ok", o.cgal_ok},
                    {"cgal_volume", io::json_measure(o.cgal_volume)},
                    {"cgal_faces", o.cgal_faces},
-                   {"volume_difference", io::json_measure(c.volume - o.cgal_volume)},
+                   {"volume_difference", io::json_measure(volume - o.cgal_volume)},
                    {"symmetric_difference_volume",
                     o.symmetric_difference_volume ? io::json_measure(*o.symmetric_difference_volume) : io::Json(nullptr)},
                    {"hausdorff", io::json_measure(o.hausdorff)}};
@@ -76,7 +66,6 @@ io::Json boolean_report_json(const Boolean_report_input& in) {
 
 std::string boolean_report_text(const Boolean_report_input& in) {
   const Boolean_run& r = *in.run;
-  const Mesh_checks& c = *in.checks;
   std::ostringstream s;
   char buf[256];
   s << "operation        " << in.operation << " of " << in.input_a << " (" << in.a->faces.size() << " faces) and "
@@ -86,15 +75,16 @@ std::string boolean_report_text(const Boolean_report_input& in) {
   if (!r.undecided_pairs.empty()) s << "undecided pairs  " << r.undecided_pairs.size() << "\n";
   s << "output           " << r.output.vertices.size() << " vertices, " << r.output.faces.size() << " faces, "
     << r.output.tags.creases().size() << " crease edges (the intersection curves)\n";
-  std::snprintf(buf, sizeof buf, "%.17g", c.volume);
-  s << "volume           " << buf << "\n";
-  s << "validation       " << (c.closed ? "closed" : "OPEN") << ", " << (c.manifold ? "manifold" : "NON-MANIFOLD") << ", "
-    << (c.oriented ? "oriented" : "MISORIENTED") << ", "
-    << (c.no_degenerate_faces ? "no degenerate face" : std::to_string(c.degenerate_faces) + " degenerate faces (rounding)");
-  if (c.self_intersecting_pairs)
-    s << ", " << (*c.self_intersecting_pairs == 0 ? "no self-intersection" : std::to_string(*c.self_intersecting_pairs) + " self-intersecting pairs");
-  s << "\n";
-  s << "euler, components " << c.euler_characteristic << ", " << c.components << "\n";
+  const Solid_report& v = r.validation;
+  if (r.ok) {
+    std::snprintf(buf, sizeof buf, "%.17g", v.volume.value);
+    s << "volume           " << buf << "\n";
+    s << "validation       " << v.summary() << "\n";
+    if (!v.self_intersection_free.passed() && r.exact_self_intersecting_pairs)
+      s << "                 before rounding: " << *r.exact_self_intersecting_pairs << " self-intersecting pairs\n";
+    if (v.euler_characteristic)
+      s << "euler, components " << *v.euler_characteristic << ", " << v.components << "\n";
+  }
   std::snprintf(buf, sizeof buf, "%.3g", r.rounding_error);
   s << "rounding error   " << buf << " (largest move of a new vertex to doubles)\n";
   if (r.perturbations) {
@@ -113,7 +103,7 @@ std::string boolean_report_text(const Boolean_report_input& in) {
     if (!o.cgal_ok) s << "oracle           CGAL's corefinement failed\n";
     else {
       std::snprintf(buf, sizeof buf, "CGAL Epeck volume %.17g, |difference| %.3g, symmetric difference %s, Hausdorff %.3g",
-                    o.cgal_volume, std::abs(c.volume - o.cgal_volume),
+                    o.cgal_volume, std::abs(r.validation.volume.value - o.cgal_volume),
                     o.symmetric_difference_volume ? std::to_string(*o.symmetric_difference_volume).c_str() : "n/a", o.hausdorff);
       s << "oracle           " << buf << "\n";
     }

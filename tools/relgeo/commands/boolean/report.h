@@ -15,20 +15,17 @@ struct Boolean_report_input {
   const Mesh_double* a = nullptr;
   const Mesh_double* b = nullptr;
   const Boolean_run* run = nullptr;
-  const Mesh_checks* checks = nullptr;
   const Oracle_comparison* oracle = nullptr;  ///< with --oracle cgal
 };
 
 /// JSON fields: operation, kernel, kernel_model, certified, status,
 /// failure, undecided_pairs, operands {a, b: file, vertices, faces, volume},
-/// output {vertices, faces, creases}, validation {closed, edge_manifold,
-/// vertex_manifold, oriented, no_degenerate_faces, self_intersecting_pairs,
-/// euler_characteristic, components, volume, boundary_edges,
-/// non_manifold_edges, non_manifold_vertices, degenerate_faces},
-/// rounding_error, perturbations, largest_perturbation, counts
+/// output {vertices, faces, creases}, validation (io::solid_report_json of
+/// the output's validate_solid report; null when the Boolean failed),
+/// exact_self_intersecting_pairs (exact kernel; else null), rounding_error, perturbations, largest_perturbation, counts
 /// {candidate_pairs, intersecting_pairs, coplanar_pairs, new_vertices,
 /// split_faces, patches}, time_s {check, broad_phase, narrow_phase,
-/// retriangulation, labelling, assembly, total}, [oracle {cgal_ok,
+/// retriangulation, labelling, assembly, total, validation}, [oracle {cgal_ok,
 /// cgal_volume, cgal_faces, volume_difference, symmetric_difference_volume,
 /// hausdorff}].
 io::Json boolean_report_json(const Boolean_report_input& in);

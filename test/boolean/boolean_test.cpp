@@ -12,6 +12,7 @@
 #include "boolean_inputs.h"
 #include "relgeo/boolean.h"
 #include "relgeo/kernel.h"
+#include "relgeo/mesh/self_intersection.h"
 #include "relgeo/mesh/validity.h"
 
 namespace relgeo::test {
@@ -188,6 +189,38 @@ TEST(MeshBooleanOperands, BadOperandsAreRefusedWithTheDefect) {
   // Nothing is checked when asked not to (and then the result may be anything).
   EXPECT_NO_THROW((void)boolean(good, crossing, Op::union_of, Filtered_exact_kernel{},
                                 Boolean_options{.check_operands = false}));
+}
+
+// Every result carries the validation report of its rounded output. Rounding
+// can make an exact result cross itself (CGAL issue 9154): on this
+// torus-sphere union the exact result has no crossing, its nearest doubles
+// do, and the report says which faces.
+TEST(MeshBooleanValidation, TheReportSeesWhatRoundingDoesToAnExactResult) {
+  const Mesh a = torus(1, 0.3, 24, 12), b = rigidly_moved(icosphere(2), 0.3, 0.2, {0, 0, 0.05});
+  const auto r = relgeo::boolean(a, b, Boolean_operation::union_of, Exact_kernel{});
+  ASSERT_TRUE(r.ok()) << r.failure;
+  Triangle_mesh<Point_3<mpq_class>> exact;
+  exact.faces = r.mesh.faces;
+  for (const auto& v : r.exact_vertices) exact.vertices.push_back(v.point);
+  EXPECT_TRUE(find_self_intersections<Exact_kernel>(exact).is_certainly_free());
+  const Solid_report& v = r.validation;
+  EXPECT_EQ(v.kernel, Filtered_exact_kernel::name());
+  EXPECT_TRUE(v.closed.passed() && v.edge_manifold.passed() && v.consistently_oriented.passed());
+  ASSERT_EQ(v.self_intersection_free.status, Check_status::fail);
+  ASSERT_FALSE(v.self_intersection_free.where.empty());
+  EXPECT_EQ(v.self_intersection_free.count, find_self_intersections<Filtered_exact_kernel>(r.mesh).pairs.size());
+  for (const Mesh_issue& i : v.self_intersection_free.where) {
+    EXPECT_EQ(i.defect, Mesh_defect::self_intersection);
+    EXPECT_LT(i.elements[0], r.mesh.faces.size());
+    EXPECT_LT(i.elements[1], r.mesh.faces.size());
+  }
+  // A clean case validates, and the report can be switched off.
+  const auto clean = relgeo::boolean(cube(0, 0, 0, 1), cube(0.5, 0.25, 0.125, 1), Boolean_operation::union_of);
+  EXPECT_TRUE(clean.validation.is_valid_solid()) << clean.validation.summary();
+  EXPECT_EQ(clean.validation.volume.value, 1.671875);
+  const auto quiet = relgeo::boolean(cube(0, 0, 0, 1), cube(0.5, 0.25, 0.125, 1), Boolean_operation::union_of,
+                                     Filtered_exact_kernel{}, {.validate_output = false});
+  EXPECT_TRUE(quiet.validation.kernel.empty());
 }
 
 }  // namespace

@@ -334,7 +334,8 @@ struct Loop_limit_mesh_bounds {
 ///
 /// compute(control, k) refines the control mesh k times, takes the limit
 /// mesh, and bounds the limit surface over each of its faces (local patches
-/// of the refined mesh). Requirements and errors as Loop_subdivider.
+/// of the refined mesh). Requirements and errors as Loop_subdivider; also
+/// Error (computation_failure) when a face normal overflows the number type.
 /// Complexity: O(F) with a per-face constant: regular faces reuse the
 /// universal ranges of the 12 box-spline functions (computed once per
 /// object), irregular faces (one per face around an irregular vertex)
@@ -425,6 +426,12 @@ class Loop_error_bounds {
     const double len = std::sqrt(internal::coordinate_to_double(nn));
     r.normal_length[g] = len;
     r.patch_kind[g] = surface.patch_kind(g);
+    // Finite input can overflow here in floating point (|n| ~ |E|^2): refuse
+    // rather than return NaN bounds (test/data/bad/coordinates_1e300.off).
+    if (!is_finite_number(nn))
+      throw Error(Error_code::computation_failure, "Loop error bounds: the normal of limit-mesh face " +
+                                                       std::to_string(g) +
+                                                       " overflows (coordinates too large for the number type)");
     if (certainly_zero_or_contains_zero(nn) || !(len > 0)) {
       r.degenerate[g] = 1;
       return;

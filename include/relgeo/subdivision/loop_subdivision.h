@@ -39,7 +39,9 @@ struct Default_loop_kernel<Point_3<FT>> : Kernel_for_number<FT> {};
 /// oriented, with no repeated vertex in a face, valid tags and finite
 /// coordinates, and no two faces sharing two edges (a two-face pillow, whose
 /// refinement is not a manifold); it throws Invalid_mesh (listing the issues),
-/// Invalid_input (the pillow) or Non_finite_input otherwise. Open meshes are fine (boundary = crease rules);
+/// Invalid_input (the pillow) or Non_finite_input otherwise, and
+/// Error (computation_failure) when finite coordinates overflow in the
+/// kernel's arithmetic. Open meshes are fine (boundary = crease rules);
 /// isolated vertices are kept fixed; geometrically degenerate (collinear)
 /// faces are refined like any other.
 ///
@@ -78,6 +80,7 @@ class Loop_subdivider {
       lv = std::move(next);
       cur = step(cur, lv, false, i + 1 < levels ? &next : nullptr);
     }
+    check_result(cur.vertices, "refinement");
     return cur;
   }
 
@@ -99,7 +102,9 @@ class Loop_subdivider {
       cur = step(cur, lv, false, &next);
       lv = std::move(next);
     }
-    return step(cur, lv, true, nullptr);
+    Mesh r = step(cur, lv, true, nullptr);
+    check_result(r.vertices, "limit mesh");
+    return r;
   }
 
   /// The limit positions of the mesh's own vertices (stencils of loop_masks.h).
@@ -114,6 +119,7 @@ class Loop_subdivider {
       const Point_3<FT> p = apply_stencil(limit_stencil(t, f, weights_, v), m.vertices);
       out.push_back(A::make(p.x, p.y, p.z));
     }
+    check_result(out, "limit positions");
     return out;
   }
 
@@ -151,6 +157,16 @@ class Loop_subdivider {
       if (!internal::point_is_finite(m.vertices[v]))
         throw Non_finite_input("Loop subdivision: vertex " + std::to_string(v) +
                                " has a NaN or infinite coordinate");
+  }
+  // Finite input can overflow in floating point (a vertex's neighbours are
+  // summed before they are weighted): refuse rather than return infinities
+  // (test/data/bad/coordinates_max.off; doc/reliability.md).
+  static void check_result(const std::vector<Point>& out, const char* what) {
+    for (std::size_t v = 0; v < out.size(); ++v)
+      if (!internal::point_is_finite(out[v]))
+        throw Error(Error_code::computation_failure,
+                    std::string("Loop subdivision: the ") + what + " overflows at vertex " + std::to_string(v) +
+                        " (coordinates too close to the largest finite value of the number type)");
   }
   static void add(Acc& a, const Acc& p) {
     a.x = FT(a.x + p.x), a.y = FT(a.y + p.y), a.z = FT(a.z + p.z);
@@ -203,6 +219,10 @@ auto Loop_subdivider<K>::step(const Mesh& m, const Level& lv, bool to_limit, Lev
   valence.assign(nv, 0);
   bool any_crease = false;
   for (Index e = 0; e < ne; ++e) any_crease |= f.edge_is_crease[e] != 0;
+  // Special (crease or corner) vertices: a tagged corner needs no crease edge,
+  // and BLZ's edge rule next to it needs its sector size all the same.
+  bool any_special = any_crease;
+  for (Index v = 0; v < nv && !any_special; ++v) any_special = f.is_special(v);
   if (any_crease) crease_ring.assign(nv, Acc{FT(0), FT(0), FT(0)});
   for (Index e = 0; e < ne; ++e) {
     const Index h = t.edge_halfedge(e), a = t.source(h), b = t.target(h);
@@ -216,7 +236,7 @@ auto Loop_subdivider<K>::step(const Mesh& m, const Level& lv, bool to_limit, Lev
 
   // BLZ: sector size of every outgoing non-crease half-edge of a special vertex.
   std::vector<Index>& sector_faces = sector_faces_;
-  if (blz && any_crease) {
+  if (blz && any_special) {
     sector_faces.assign(3 * std::size_t(nf), 0);
     for (Index v = 0; v < nv; ++v) {
       if (!f.is_special(v)) continue;
@@ -263,15 +283,15 @@ auto Loop_subdivider<K>::step(const Mesh& m, const Level& lv, bool to_limit, Lev
     // refined ring sum 3n/8 p + 5/8 R (R its ring sum): no accumulation. The
     // others (darts; with BLZ, neighbours of crease/corner vertices) sum
     // their edge points explicitly.
-    explicit_ring.assign(any_crease ? nv : 0, 0);  // without creases there are no darts
-    if (any_crease)
+    explicit_ring.assign(any_special ? nv : 0, 0);  // without creases there are no darts
+    if (any_special)
       for (Index v = 0; v < nv; ++v) explicit_ring[v] = f.vertex_kind[v] == Vertex_kind::dart;
-    if (blz && any_crease)
+    if (blz && any_special)
       for (Index e = 0; e < ne; ++e) {
         const Index h = t.edge_halfedge(e), a = t.source(h), b = t.target(h);
         if (!f.edge_is_crease[e] && f.is_special(a) != f.is_special(b)) explicit_ring[a] = explicit_ring[b] = 1;
       }
-    if (any_crease) {
+    if (any_special) {
       ring2.resize(nv);
       for (Index v = 0; v < nv; ++v)
         if (explicit_ring[v]) ring2[v] = Acc{FT(0), FT(0), FT(0)};
@@ -296,7 +316,7 @@ auto Loop_subdivider<K>::step(const Mesh& m, const Level& lv, bool to_limit, Lev
         r = comb(w.three_eighths(), sum(p[a], p[b]), w.eighth(), sum(p[c], p[d]));
       }
     }
-    if (to_limit && any_crease) {
+    if (to_limit && any_special) {
       if (explicit_ring[a]) add(ring2[a], r);
       if (explicit_ring[b]) add(ring2[b], r);
     }
@@ -360,7 +380,7 @@ auto Loop_subdivider<K>::step(const Mesh& m, const Level& lv, bool to_limit, Lev
         case Vertex_kind::smooth:
         case Vertex_kind::dart: {
           const Index n = valence[v];
-          if (any_crease && explicit_ring[v]) {
+          if (any_special && explicit_ring[v]) {
             q[v] = comb(w.limit_centre(n), q[v], w.chi(n), ring2[v]);
           } else {  // sum of the refined ring = 3n/8 p + 5/8 R
             const Acc r2 = comb(FT(three_eighths_n_unit * FT(static_cast<int>(n))), p[v], five_eighths, ring[v]);

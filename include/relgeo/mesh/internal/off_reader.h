@@ -139,7 +139,7 @@ class Off_reader {
     while (tokens.empty() && pos_ < text_.size()) {
       const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
       std::string_view line = text_.substr(pos_, end - pos_);
-      pos_ = end + 1;
+      pos_ = std::min(end + 1, text_.size());  // no newline at the end: stay at the end
       ++line_;
       line = line.substr(0, line.find('#'));
       std::size_t i = 0;

@@ -98,7 +98,7 @@ class Ply_check {
       if (pos_ >= text_.size()) fail_header("the file ends before end_header");
       const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
       const std::vector<std::string_view> w = words(text_.substr(pos_, end - pos_));
-      pos_ = end + 1;
+      pos_ = std::min(end + 1, text_.size());  // no newline at the end: stay at the end
       ++line_;
       if (line_ == 1) {
         if (w.empty() || w[0] != "ply") fail_header("'ply' expected");
@@ -131,6 +131,14 @@ class Ply_check {
         } else {
           if (w.size() < 3) fail_header("'property TYPE NAME' expected");
           p.size = type_size(w[1]);
+          // CGAL's reader casts vertex coordinates to float or double
+          // without checking (a null pointer for any other type; found by
+          // fuzz/mesh_ply).
+          const bool coordinate = elements_.back().name == "vertex" && (w[2] == "x" || w[2] == "y" || w[2] == "z");
+          const bool floating = w[1] == "float" || w[1] == "float32" || w[1] == "double" || w[1] == "float64";
+          if (coordinate && p.size != 0 && !floating)
+            fail_header("vertex coordinate '" + std::string(w[2]) + "' of type '" + std::string(w[1].substr(0, 40)) +
+                        "': float or double expected");
         }
         if (p.size == 0) fail_header("unknown property type");
         elements_.back().properties.push_back(p);

@@ -30,6 +30,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libstb-dev
   libopenmesh-dev
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
   chromium            # the browser test of the experiment report (tool_experiment_report_in_browser)
   clang libclang-rt-14-dev   # libFuzzer and its sanitizer runtimes (fuzz/, the fuzz smoke of `test`)
 )
@@ -95,7 +96,7 @@ sanitized_suites=(
   relgeo_kernel_environment_tests
   relgeo_hull_error_tests relgeo_hull_kernel_tests relgeo_hull_property_tests
   relgeo_linear_tests relgeo_curves_tests relgeo_extrusion_tests
-  relgeo_mesh_tests relgeo_subdivision_tests relgeo_subdivision_limit_tests
+  relgeo_mesh_tests relgeo_mesh_solid_tests relgeo_subdivision_tests relgeo_subdivision_limit_tests
   relgeo_subdivision_bounds_tests
 )
 

@@ -12,18 +12,41 @@
 // One benchmark iteration evaluates the whole batch; the `time/call` and
 // `items_per_second` columns are per predicate call (CPU time), `uncertain` is
 // the fraction of `uncertain` answers. After the runs a "ratios" table
-// divides, for every family, each subject's real time per call by that of
+// divides, for every family, each subject's CPU time per call by that of
 // Naive_kernel<double> and of CGAL::Epick's own functor, and marks the
 // project's throughput bars PASS or MISS. It is a report: the exit status is 0
 // whatever the ratios (1 only when an argument is wrong or the filter matched
 // no benchmark).
 //
+// Stable ratios. Each figure is the minimum over repetitions of the CPU time
+// per call: on a shared machine other processes only ever add time (to the
+// real time by waiting, to the CPU time by evicting caches and predictor
+// state), so the minimum is the figure least disturbed, and CPU time does
+// not count the waiting. Measured on the shared 2-core machine, with real
+// time per call at 1.5-3x the CPU time: the median real-time ratio of
+// filtered / CGAL::Epick on near-collinear input read 0.92 in one run and
+// 0.88 in the next of the same binary (33% spread of filtered's real times
+// in the first), the CPU-time ratio 0.89 and 0.89. The other cause was the
+// branch predictor learning the replayed batch's signs: CGAL::Epick, which
+// branches on the sign, read 2.6 ns per call on uniform orientation_2 input
+// with --relgeo_cases=4096 and, at the default 32768 queries, 3.5 ns in two
+// full runs and 13 ns in others of the same binary (filtered, which does
+// not branch on the sign, 2.8 ns throughout), so its ratios to CGAL swung
+// from 0.2 to 0.8 (to 1.1 at 4096). Every pass now swaps the first two
+// points of a different pseudo-random half of the queries
+// (predicate_benchmark.h), so no sign sequence is replayed. Subjects are
+// interleaved at random, every repetition starts with a short warm-up (the
+// subject's queries back in cache), and a bar should be read from two runs
+// at least.
+//
 // Defaults, each unless given on the command line: --benchmark_min_time=0.2
-// --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true (the
-// console then shows only the median of each benchmark; the table uses the
-// median too and shows the spread of the repetitions). Own flag: --relgeo_cases=N, queries per family (default 32768;
-// predicate_benchmark.h explains why not fewer). Every Google Benchmark flag
-// works; with --benchmark_format=json the table goes to stderr.
+// --benchmark_min_warmup_time=0.02 --benchmark_repetitions=5
+// --benchmark_enable_random_interleaving=true (the console then shows only
+// the minimum of each benchmark; the table shows the spread of the
+// repetitions too). With --benchmark_report_aggregates_only=true the table
+// reads the "min" aggregate. Own flag: --relgeo_cases=N, queries per family
+// (default 32768; predicate_benchmark.h explains why not fewer). Every Google
+// Benchmark flag works; with --benchmark_format=json the table goes to stderr.
 #include <unistd.h>
 
 #include <algorithm>
@@ -77,6 +100,10 @@ const std::vector<Bar>& bars() {
       {"orientation_2", "near-collinear", "failsafe<double>", kNaiveDouble, 1.3},
       {"orientation_2", "uniform", "filtered", kEpick, 1.0},
       {"orientation_2", "near-collinear", "filtered", kEpick, 2.0},
+      {"orientation_3", "uniform", "filtered", kEpick, 0.5},
+      {"orientation_3", "near-coplanar", "filtered", kEpick, 1.0},
+      {"orientation_2", "uniform", "cgal-epick", kEpick, 1.1},
+      {"orientation_3", "uniform", "cgal-epick", kEpick, 1.1},
   };
   return b;
 }
@@ -85,7 +112,7 @@ const std::vector<Bar>& bars() {
 /// keeps the real and CPU time per call of every run, for the ratio table.
 class Ratio_reporter : public benchmark::BenchmarkReporter {
  public:
-  /// compact: of repeated benchmarks, show only the median (the table uses
+  /// compact: of repeated benchmarks, show only the minimum (the table uses
   /// every repetition and shows their spread).
   Ratio_reporter(std::unique_ptr<benchmark::BenchmarkReporter> inner,
                  std::size_t calls_per_iteration, bool compact)
@@ -100,20 +127,34 @@ class Ratio_reporter : public benchmark::BenchmarkReporter {
       std::vector<Run> shown;
       for (const Run& r : runs)
         if (r.repetitions <= 1 || r.error_occurred ||
-            (r.run_type == Run::RT_Aggregate && r.aggregate_name == "median"))
+            (r.run_type == Run::RT_Aggregate && r.aggregate_name == "min"))
           shown.push_back(r);
       if (!shown.empty()) inner_->ReportRuns(shown);
     }
     for (const Run& r : runs) {
-      if (r.run_type != Run::RT_Iteration || r.error_occurred || r.iterations <= 0) continue;
+      if (r.error_occurred || r.iterations <= 0) continue;
+      // Every repetition, or (--benchmark_report_aggregates_only) their minimum.
+      const bool repetition = r.run_type == Run::RT_Iteration;
+      if (!repetition && r.aggregate_name != "min") continue;
       const std::string& name = r.run_name.function_name;
       auto it = std::find_if(entries_.begin(), entries_.end(),
                              [&](const Entry& e) { return e.name == name; });
-      if (it == entries_.end()) it = entries_.insert(entries_.end(), Entry{name, {}, {}, 0});
+      if (it == entries_.end()) {
+        Entry e;
+        e.name = name;
+        it = entries_.insert(entries_.end(), std::move(e));
+      }
       if (const auto c = r.counters.find("uncertain"); c != r.counters.end())
         it->uncertain = c->second.value;
-      it->real_ns.push_back(1e9 * to_seconds(r.GetAdjustedRealTime(), r.time_unit) / calls_);
-      it->cpu_ns.push_back(1e9 * to_seconds(r.GetAdjustedCPUTime(), r.time_unit) / calls_);
+      const double real = 1e9 * to_seconds(r.GetAdjustedRealTime(), r.time_unit) / calls_;
+      const double cpu = 1e9 * to_seconds(r.GetAdjustedCPUTime(), r.time_unit) / calls_;
+      if (repetition) {
+        it->real_ns.push_back(real);
+        it->cpu_ns.push_back(cpu);
+      } else {
+        it->min_real_ns = real;
+        it->min_cpu_ns = cpu;
+      }
     }
   }
   void Finalize() override { inner_->Finalize(); }
@@ -126,8 +167,18 @@ class Ratio_reporter : public benchmark::BenchmarkReporter {
  private:
   struct Entry {
     std::string name;
-    std::vector<double> real_ns, cpu_ns;
+    std::vector<double> real_ns, cpu_ns;  // per repetition
+    double min_real_ns = 0, min_cpu_ns = 0;  // the "min" aggregate, when only it was reported
     double uncertain = 0;  // fraction of `uncertain` answers on the batch
+    std::size_t runs() const { return cpu_ns.empty() ? 1 : cpu_ns.size(); }
+    double min_real() const { return real_ns.empty() ? min_real_ns : *std::min_element(real_ns.begin(), real_ns.end()); }
+    double min_cpu() const { return cpu_ns.empty() ? min_cpu_ns : *std::min_element(cpu_ns.begin(), cpu_ns.end()); }
+    /// (max - min) / min of the CPU times (negative when unknown).
+    double spread() const {
+      if (cpu_ns.size() < 2) return -1;
+      const auto [lo, hi] = std::minmax_element(cpu_ns.begin(), cpu_ns.end());
+      return (*hi - *lo) / *lo;
+    }
   };
   struct Row {
     std::string subject;
@@ -159,19 +210,17 @@ void Ratio_reporter::print_ratios(std::ostream& out) const {
     auto g = std::find_if(groups.begin(), groups.end(),
                           [&](const auto& x) { return x.first == group; });
     if (g == groups.end()) g = groups.insert(groups.end(), {group, {}});
-    const auto [lo, hi] = std::minmax_element(e->real_ns.begin(), e->real_ns.end());
-    const double real = median(e->real_ns);
-    g->second.push_back({subject, real, median(e->cpu_ns), (*hi - *lo) / real, e->uncertain});
+    g->second.push_back({subject, e->min_real(), e->min_cpu(), e->spread(), e->uncertain});
   }
   if (groups.empty()) return;
 
   const auto flags = out.flags();
   const auto precision = out.precision();
-  out << "\nratios: real time per predicate call, median of " << entries.front()->real_ns.size()
-      << " run(s); /double and /Epick divide it by that of Naive_kernel<double> (\""
+  out << "\nratios: CPU time per predicate call, minimum of " << entries.front()->runs()
+      << " repetition(s); /double and /Epick divide it by that of Naive_kernel<double> (\""
       << kNaiveDouble << "\") and of CGAL::Epick's own functor (\"" << kEpick << "\").\n"
-      << "  spread = (max - min) / median of the runs' real times; real/cpu > 1.05 means the\n"
-      << "  process waited for the CPU (busy machine): trust the cpu column then.\n"
+      << "  real ns = minimum real time; spread = (max - min) / min of the CPU times; real/cpu > 1.05\n"
+      << "  means the process waited for the CPU (busy machine). Read a bar from two runs at least.\n"
       << "  subjects: relgeo kernels by name(), cgal-* = relgeo's Cgal_kernel adapter,\n"
       << "  CGAL::* = CGAL's functor used directly.\n";
   for (const auto& [group, rows] : groups) {
@@ -185,8 +234,8 @@ void Ratio_reporter::print_ratios(std::ostream& out) const {
     const std::string predicate = group.substr(0, group.find('/'));
     const std::string family = group.substr(group.find('/') + 1);
     out << '\n'
-        << std::left << std::setw(34) << group << std::right << std::setw(10) << "ns/call"
-        << std::setw(10) << "cpu ns" << std::setw(8) << "spread" << std::setw(9) << "/double"
+        << std::left << std::setw(34) << group << std::right << std::setw(10) << "cpu ns"
+        << std::setw(10) << "real ns" << std::setw(8) << "spread" << std::setw(9) << "/double"
         << std::setw(9) << "/Epick" << std::setw(10) << "uncertain" << "   bar\n";
     for (const Row& r : rows) {
       out << "  " << std::left << std::setw(32) << r.subject << std::right << std::fixed;
@@ -198,12 +247,13 @@ void Ratio_reporter::print_ratios(std::ostream& out) const {
           out << std::setw(9) << "n/a";
           return;
         }
-        const double q = r.real_ns / ref->real_ns;
+        const double q = r.cpu_ns / ref->cpu_ns;
         out << std::setw(9) << std::setprecision(q < 10 ? 3 : q < 1000 ? 1 : 0) << q;
       };
-      ns(r.real_ns);
       ns(r.cpu_ns);
-      out << std::setw(7) << std::setprecision(0) << 100 * r.spread << '%';
+      ns(r.real_ns);
+      if (r.spread < 0) out << std::setw(8) << "n/a";
+      else out << std::setw(7) << std::setprecision(0) << 100 * r.spread << '%';
       ratio(naive);
       ratio(epick);
       out << std::setw(9) << std::setprecision(1) << 100 * r.uncertain << '%';
@@ -216,10 +266,10 @@ void Ratio_reporter::print_ratios(std::ostream& out) const {
           out << "n/a (reference not run)";
           continue;
         }
-        const bool pass = r.real_ns / ref->real_ns <= bar.limit;
-        const bool pass_cpu = r.cpu_ns / ref->cpu_ns <= bar.limit;
+        const bool pass = r.cpu_ns / ref->cpu_ns <= bar.limit;
+        const bool pass_real = r.real_ns / ref->real_ns <= bar.limit;
         out << (pass ? "PASS" : "MISS");
-        if (pass != pass_cpu) out << " (by cpu time: " << (pass_cpu ? "PASS" : "MISS") << ')';
+        if (pass != pass_real) out << " (by real time: " << (pass_real ? "PASS" : "MISS") << ')';
       }
       if (r.real_ns > 1.05 * r.cpu_ns)
         out << "   real/cpu " << std::setprecision(2) << r.real_ns / r.cpu_ns;
@@ -230,8 +280,10 @@ void Ratio_reporter::print_ratios(std::ostream& out) const {
   out.precision(precision);
 }
 
-/// The display reporter --benchmark_format asks for (console or json), with
-/// colour only on a terminal.
+/// The "min" statistic of repetitions (Google Benchmark computes mean,
+/// median, stddev and cv).
+double minimum(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
+
 }  // namespace
 }  // namespace relgeo_bench
 
@@ -239,13 +291,15 @@ int main(int argc, char** argv) {
   using namespace relgeo_bench;
   namespace ra = relgeo::analysis;
 
-  // Defaults, each unless given: 3 repetitions of 0.2 s, randomly interleaved
-  // (so a burst of load from another process hits a repetition, not a whole
-  // benchmark), median used. About a minute in all.
+  // Defaults, each unless given: 5 repetitions of 0.2 s after 0.02 s of
+  // warm-up, randomly interleaved (so a burst of load from another process
+  // hits a repetition, not a whole benchmark), minimum used. About two
+  // minutes in all.
   Command_line args(argc, argv);
   const bool default_repetitions = !args.has("--benchmark_repetitions");
   args.set_default("--benchmark_min_time", "0.2");
-  args.set_default("--benchmark_repetitions", "3");
+  args.set_default("--benchmark_min_warmup_time", "0.02");
+  args.set_default("--benchmark_repetitions", "5");
   args.set_default("--benchmark_enable_random_interleaving", "true");
   const std::string format = args.value("--benchmark_format");
   // Our own flag, consumed before Google Benchmark sees the arguments.
@@ -261,7 +315,7 @@ int main(int argc, char** argv) {
     cases = static_cast<std::size_t>(c);
     args.erase("--relgeo_cases");
   }
-  // Shorten the console output to the medians, unless the user asked for
+  // Shorten the console output to the minima, unless the user asked for
   // repetitions or aggregates, or for machine-readable output.
   const bool compact = default_repetitions && format != "json" &&
                        !args.has("--benchmark_display_aggregates_only") &&
@@ -284,14 +338,16 @@ int main(int argc, char** argv) {
       names.push_back("orientation_2/" + w.name + "/" + s.name);
       benchmark::RegisterBenchmark(names.back().c_str(),
                                    [fn = s.orientation_2, &w](benchmark::State& st) { fn(st, w); })
-          ->Unit(benchmark::kMicrosecond);
+          ->Unit(benchmark::kMicrosecond)
+          ->ComputeStatistics("min", minimum);
     }
   for (const auto& w : families_3)
     for (const Subject& s : subjects) {
       names.push_back("orientation_3/" + w.name + "/" + s.name);
       benchmark::RegisterBenchmark(names.back().c_str(),
                                    [fn = s.orientation_3, &w](benchmark::State& st) { fn(st, w); })
-          ->Unit(benchmark::kMicrosecond);
+          ->Unit(benchmark::kMicrosecond)
+          ->ComputeStatistics("min", minimum);
     }
 
   Ratio_reporter reporter(make_display_reporter(format, "relgeo_predicate_benchmark"), cases, compact);

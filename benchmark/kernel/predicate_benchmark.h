@@ -8,13 +8,20 @@
 // over the batch per benchmark iteration. The signs are summed and the sum
 // passed to benchmark::DoNotOptimize, so no call can be dropped.
 //
-// The batch is large (kDefaultCases = 32768 queries) on purpose: a branch
-// predictor replaying a short batch thousands of times learns its sign
-// sequence, and the measured time then depends on how well each binary's code
-// layout lets it memorise (with 4096 queries CGAL::Epick's own functor measured
-// 2.3 ns in one build and 5.2 ns in another). From about 16k queries on the
-// timings are stable and reflect unpredictable signs, as a predicate sees in
-// an algorithm. --relgeo_cases=N changes it.
+// A branch predictor replaying the same batch thousands of times learns its
+// sign sequence, and the time of a predicate that branches on the sign (CGAL's
+// filters do; relgeo's fast paths do not) then depends on how much it learnt,
+// which depends on the batch size, the binary's code layout and what else ran
+// on the core: with 4096 queries CGAL::Epick's own functor measured 2.3 ns in
+// one build and 5.2 ns in another; on 2026-11-25, 2.6 ns on uniform
+// orientation_2 input while the same functor behind relgeo's adapter, whose
+// two extra branches dilute the branch history, measured 8.0 ns (a "3x
+// adapter cost" that was the predictor's); and with 32768 queries 3.5 ns in
+// two full runs and 13 ns in others, same binary. So every pass swaps the
+// first two points of a pseudo-random half of the queries, differently in
+// each pass (swapped() below): no sign sequence is ever replayed. The batch
+// stays large (kDefaultCases = 32768 queries) so that a pass is long against
+// the timer; --relgeo_cases=N changes it.
 //
 // Benchmark names are `<predicate>/<family>/<subject>`, e.g.
 // `orientation_2/near-collinear/failsafe<double>`; the ratio table of
@@ -70,13 +77,29 @@ int sign_value(CgalSign s) {
   return static_cast<int>(s);
 }
 
+/// Whether query i of pass `pass` swaps its first two points (which negates
+/// the orientation): the top bit of a multiplicative hash, computed without a
+/// branch, different in every pass. So no two passes present the same
+/// sequence of signs, and a branch predictor cannot learn it by replay: a
+/// predicate that branches on the sign pays its mispredictions in every
+/// pass, however quiet the core (measured: CGAL::Epick's own orientation_2
+/// on uniform input read 3.5 ns per call in some full runs of 32768 replayed
+/// queries and 13 ns in others, with 80% of its sign branches learnt or not;
+/// relgeo's filtered kernel, which does not branch on the sign, 2.8 ns in all).
+inline bool swapped(std::uint64_t pass, std::size_t i) {
+  return ((static_cast<std::uint64_t>(i) + pass) * 0x9E3779B97F4A7C15ull) >> 63;
+}
+
 /// The timed loop shared by every subject: one pass over the batch per
-/// iteration; `call(i)` evaluates query i and returns its sign value.
+/// iteration; `call(i, swap)` evaluates query i, with its first two points
+/// swapped when `swap`, and returns its sign value.
 template <class Call>
 void time_batch(benchmark::State& state, std::size_t n, Call call, double uncertain_fraction) {
+  std::uint64_t pass = 0x5DEECE66Dull;
   for (auto _ : state) {
     int acc = 0;
-    for (std::size_t i = 0; i < n; ++i) acc += call(i);
+    pass += 0x2545F4914F6CDD1Dull;
+    for (std::size_t i = 0; i < n; ++i) acc += call(i, swapped(pass, i));
     benchmark::DoNotOptimize(acc);
   }
   const auto calls = static_cast<double>(n);
@@ -151,7 +174,13 @@ Subject make_subject(std::string name) {
         },
         eval);
     const Q2* data = prepared.queries.data();
-    time_batch(state, prepared.queries.size(), [&](std::size_t i) { return eval(data[i]); },
+    time_batch(state, prepared.queries.size(),
+               [&](std::size_t i, bool swap) {
+                 const Q2& c = data[i];
+                 const P2& a = swap ? c.q : c.p;  // selected, not branched on
+                 const P2& b = swap ? c.p : c.q;
+                 return sign_value(orient(a, b, c.r));
+               },
                prepared.uncertain);
   };
   Bench_fn_3 b3 = [cache3, prepare](benchmark::State& state,
@@ -167,7 +196,13 @@ Subject make_subject(std::string name) {
         },
         eval);
     const Q3* data = prepared.queries.data();
-    time_batch(state, prepared.queries.size(), [&](std::size_t i) { return eval(data[i]); },
+    time_batch(state, prepared.queries.size(),
+               [&](std::size_t i, bool swap) {
+                 const Q3& c = data[i];
+                 const P3& a = swap ? c.q : c.p;
+                 const P3& b = swap ? c.p : c.q;
+                 return sign_value(orient(a, b, c.r, c.s));
+               },
                prepared.uncertain);
   };
   auto release = [cache2, cache3] {

@@ -1,13 +1,17 @@
-// The expansion stage of Filtered_exact_kernel (internal/expansion_orientation.h)
-// against the GMP stage (internal/exact_dyadic.h) on near-degenerate input
-// over the whole guarded range, at its edges and outside it.
+// The orientation_2 expansion stage of Filtered_exact_kernel
+// (internal/expansion_orientation.h) against the GMP stage
+// (internal/exact_dyadic.h) on near-degenerate input over the whole guarded
+// range, at its edges and outside it; the constant of its bound.
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <random>
 
 #include "relgeo/analysis/predicate_workloads.h"
+#include "relgeo/core/dyadic.h"
 #include "relgeo/kernel/internal/exact_dyadic.h"
 #include "relgeo/kernel/internal/expansion_orientation.h"
 
@@ -38,7 +42,10 @@ bool in_range(const Case& c) {
 }
 
 // Agreement with GMP when decided; every case in range must be decided.
+std::size_t by_step[2] = {0, 0};  // exact expansions, compensated
 void expect_agreement(const Case& c, std::size_t& decided) {
+  const auto s = expansion_orientation_2_with_step(c.px, c.py, c.qx, c.qy, c.rx, c.ry);
+  if (s) ++by_step[s->second];
   const auto e = expansion_orientation_2(c.px, c.py, c.qx, c.qy, c.rx, c.ry);
   ASSERT_EQ(e.has_value(), in_range(c))
       << std::hexfloat << c.px << ' ' << c.py << ' ' << c.qx << ' ' << c.qy << ' ' << c.rx << ' ' << c.ry;
@@ -68,6 +75,24 @@ TEST(ExpansionOrientation, AgreesWithGmpOverTheGuardedRange) {
   // coordinates come out tinier) and every one of those settles (above).
   EXPECT_GT(decided, cases * 99 / 100);
   EXPECT_GT(zeros, 0u);
+  // Both steps run: the compensated one on near-collinear cases, the exact
+  // one on the exactly collinear quarter.
+  std::printf("[ steps    ] cases=%zu compensated=%zu exact=%zu\n", cases, by_step[1], by_step[0]);
+  EXPECT_GT(by_step[1], cases / 2);
+  EXPECT_GT(by_step[0], cases / 5);
+}
+
+TEST(ExpansionOrientation, ConstantFollowsTheDerivation) {
+  // The inequality of step 1 (expansion_orientation.h), exactly.
+  using C = Expansion_orientation_2_constants;
+  const mpq_class u = exact_rational(C::u);
+  auto gamma = [&](int n) { return mpq_class(n * u / (1 - n * u)); };
+  const mpq_class k = u * u + 2 * u * gamma(3) +
+                      gamma(C::terms - 2) * gamma(C::terms - 1) * ((1 + u) * (1 + u) + 2 * u * (1 + gamma(3)));
+  EXPECT_EQ(exact_rational(C::c), 32 * u * u);
+  EXPECT_GE((1 - u) * (1 - u) * (1 - gamma(2)) * exact_rational(C::c), k);
+  EXPECT_LE(k, 20 * u * u);  // "about 19 u^2"
+  EXPECT_GE(C::c * 0x1p-904, 0x1p-1022);  // the bound is normal for products of multiples of 2^-452
 }
 
 TEST(ExpansionOrientation, MixedMagnitudesAndZeros) {

@@ -7,6 +7,7 @@
 #include <array>
 #include <cfenv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 
@@ -152,6 +153,36 @@ TEST(FilterBound, FilteredKernelUsesEveryStage) {
       K::orientation_2_with_stage({small * 0.5, small * 0.5}, {small * 12, small * 12}, {small * 24, small * 24});
   EXPECT_EQ(small_zero.second, Filter_stage::interval);  // exact differences and products: a zero interval
   EXPECT_EQ(small_zero.first, Certified_sign::zero);
+}
+
+TEST(FilterBound, FilteredOrientation3UsesGmpOnlyOutsideTheExpansionRange) {
+  // Every case whose coordinates lie in the expansion range is decided by the
+  // epsilon test or the expansion stage; intervals and GMP see only the rest.
+  using K = Filtered_exact_kernel;
+  std::size_t by_stage[5] = {0, 0, 0, 0, 0}, in_range = 0, outside = 0;
+  for (const auto& w : analysis::standard_workloads_3(20000, 31)) {
+    for (const auto& c : w.cases) {
+      const auto& v = c.c;
+      const auto [sign, stage] = K::orientation_3_with_stage({v[0], v[1], v[2]}, {v[3], v[4], v[5]},
+                                                             {v[6], v[7], v[8]}, {v[9], v[10], v[11]});
+      ASSERT_TRUE(is_certain(sign));
+      ++by_stage[static_cast<int>(stage)];
+      bool range = true;
+      for (double x : v) range &= internal::Expansion_orientation_3_range::contains(x);
+      (range ? in_range : outside) += 1;
+      if (range) {
+        ASSERT_TRUE(stage == Filter_stage::semi_static || stage == Filter_stage::expansion) << w.name;
+      }
+    }
+  }
+  std::printf("[ stages   ] semi-static %zu, interval %zu, expansion %zu, exact %zu (in range %zu, outside %zu)\n",
+              by_stage[0], by_stage[1], by_stage[2], by_stage[3], in_range, outside);
+  EXPECT_GT(by_stage[static_cast<int>(Filter_stage::expansion)], 20000u);  // near-coplanar, degenerate
+  EXPECT_GT(outside, 0u);  // extreme magnitudes reach the interval and GMP stages
+  EXPECT_GT(by_stage[static_cast<int>(Filter_stage::interval)] + by_stage[static_cast<int>(Filter_stage::exact)], 0u);
+  const auto beyond = K::orientation_3_with_stage({0, 0, 0}, {0x1p400, 0, 0}, {0, 0x1p400, 0}, {0x1p399, 0x1p399, 0});
+  EXPECT_EQ(beyond.first, Certified_sign::zero);  // on the plane z = 0: exactly degenerate
+  EXPECT_EQ(beyond.second, Filter_stage::semi_static);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Self-intersection with exact predicates and check_solid (own TU: CGAL PMP).
+// Self-intersection with exact predicates and check_solid.
 #include <gtest/gtest.h>
 
 #include <cmath>

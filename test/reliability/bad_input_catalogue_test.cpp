@@ -28,6 +28,7 @@
 #include "relgeo/kernel.h"
 #include "relgeo/mesh/mesh_io.h"
 #include "relgeo/mesh/self_intersection.h"
+#include "relgeo/mesh/solid_validation.h"
 #include "relgeo/mesh/validity.h"
 #include "relgeo/subdivision.h"
 
@@ -193,9 +194,15 @@ std::vector<Entry> catalogue() {
        }},
       {"inside_out.off", "every face reversed (normals inward)",
        [] {
-         // Consistent orientation is checked; which side is outside is not
-         // (CGAL's is_outward_oriented says false; doc/reliability.md).
-         return "check_solid: " + expect_defects(check_solid(read("inside_out.off")), {}) + " (inward orientation is not detected)";
+         // check_solid checks consistent orientation, not which side is
+         // outside; validate_solid's orientation test does (as CGAL's
+         // is_outward_oriented, which says false).
+         const Mesh m = read("inside_out.off");
+         const std::string s = expect_defects(check_solid(m), {});
+         const Solid_report v = validate_solid(m);
+         EXPECT_EQ(v.outward_oriented.status, Check_status::fail);
+         return "check_solid: " + s + " (consistent; the side is not its test); validate_solid: outward_oriented " +
+                std::string(to_string(v.outward_oriented.status));
        }},
       {"non_manifold_vertex.off", "two tetrahedra sharing vertex 0",
        [] {

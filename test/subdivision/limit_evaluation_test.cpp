@@ -299,6 +299,30 @@ TEST(LimitEvaluation, KernelsAgreeAndIntervalsEnclose) {
     }
 }
 
+// The child parameters of local subdivision are exact rationals; each is
+// rounded once to the kernel's type. Rounding to 64 bits first and then to
+// the target (the former route) turns these into ties and rounds them the
+// wrong way: q = 1 + 2^-53 + 2^-80 gave 1 in double, q = 1 + 2^-24 + 2^-60
+// gave 1 in float, (1/2 + 2^-70) 2^-1074 gave 0 in double.
+TEST(LimitEvaluation, ParametersAreRoundedOnceToTheKernelsType) {
+  const auto two_to = [](int e) {  // 2^e, e < 0, as an exact rational
+    mpq_class r(1);
+    mpq_div_2exp(r.get_mpq_t(), r.get_mpq_t(), mp_bitcnt_t(-e));
+    return r;
+  };
+  const mpq_class one(1), q53 = one + two_to(-53) + two_to(-80);
+  EXPECT_EQ(internal::ft_from_rational<double>(q53), 1 + 0x1p-52);
+  EXPECT_EQ(internal::ft_from_rational<Mpfr_number<53>>(q53).to_double(), 1 + 0x1p-52);
+  const Interval i = internal::ft_from_rational<Interval>(q53);  // the tightest enclosure
+  EXPECT_EQ(i.inf(), 1.0);
+  EXPECT_EQ(i.sup(), 1 + 0x1p-52);
+  const mpq_class q24 = one + two_to(-24) + two_to(-60);
+  EXPECT_EQ(internal::ft_from_rational<float>(q24), 1 + 0x1p-23f);
+  const mpq_class sub = two_to(-1075) + two_to(-1144);  // just above half the smallest subnormal
+  EXPECT_EQ(internal::ft_from_rational<double>(sub), 0x1p-1074);
+  EXPECT_EQ(internal::ft_from_rational<mpq_class>(q53), q53);
+}
+
 TEST(LimitEvaluation, BadInputIsRefusedWithTypedErrors) {
   const Approx S(icosphere(1));
   const auto code = [](auto&& f) {

@@ -1,15 +1,16 @@
 # check_tool_run.cmake — runs the relgeo tool once and checks the contract:
 #   cmake -DTOOL=... -DARGS=a;b;c -DEXPECT_CODE=N [-DSTDOUT_MATCHES=re1;re2]
-#         [-DSTDOUT_REJECTS=re1;re2] [-DFILES=f1;f2] [-DJSON_FILES=f1;f2]
+#         [-DSTDOUT_REJECTS=re1;re2] [-DSTDERR_MATCHES=re1;re2] [-DFILES=f1;f2] [-DJSON_FILES=f1;f2]
 #         [-DSTDOUT_JSON=ON] [-DSTDIN=file] [-DWORKDIR=dir] -P check_tool_run.cmake
 # Fails unless the exit code is EXPECT_CODE, stdout matches every regex of
-# STDOUT_MATCHES and none of STDOUT_REJECTS,
+# STDOUT_MATCHES and none of STDOUT_REJECTS, stderr matches every regex of
+# STDERR_MATCHES (e.g. the kind of a typed error),
 # every file in FILES exists (removed first), every file in JSON_FILES and,
 # with STDOUT_JSON, stdout parse as JSON. For exit code 2, stderr must be
 # exactly one line starting with "relgeo: error: ". STDIN: a file fed to the
 # tool's standard input; WORKDIR: the folder it runs in (created). Lists are
 # joined with "@@".
-foreach(v ARGS STDOUT_MATCHES STDOUT_REJECTS FILES JSON_FILES)
+foreach(v ARGS STDOUT_MATCHES STDOUT_REJECTS STDERR_MATCHES FILES JSON_FILES)
   string(REPLACE "@@" ";" ${v} "${${v}}")
 endforeach()
 foreach(f IN LISTS FILES)
@@ -39,6 +40,11 @@ endforeach()
 foreach(re IN LISTS STDOUT_REJECTS)
   if(out MATCHES "${re}")
     message(FATAL_ERROR "relgeo ${ARGS}: stdout matches '${re}', which it must not\nstdout:\n${out}")
+  endif()
+endforeach()
+foreach(re IN LISTS STDERR_MATCHES)
+  if(NOT err MATCHES "${re}")
+    message(FATAL_ERROR "relgeo ${ARGS}: stderr does not match '${re}'\nstderr:\n${err}")
   endif()
 endforeach()
 if(EXPECT_CODE EQUAL 2)

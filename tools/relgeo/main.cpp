@@ -49,7 +49,8 @@ int run(int argc, char** argv) {
   app.require_subcommand(0, 1);
   app.footer(kernel_help_text() +
              "\nInputs can be given positionally: relgeo hull points.txt, relgeo subdivide mesh.off [out.off], "
-             "relgeo linsolve system.txt, relgeo extrusion contour.json ('-': standard input). Every flag has "
+             "relgeo linsolve system.txt, relgeo extrusion contour.json, relgeo join model.json --mesh a.off "
+             "('-': standard input). Every flag has "
              "a default except the inputs; 'relgeo help COMMAND' (or 'relgeo COMMAND --help') lists a command's "
              "options with their defaults. Manual: doc/tool.md.\n" +
              exit_codes_text);
@@ -77,6 +78,11 @@ int run(int argc, char** argv) {
                   "Loop subdivision of a mesh file under a kernel: refined or limit mesh, its distance to the "
                   "exact limit surface, and (--bounds) error bounds of the limit mesh (thesis Sec. 5.4.1)",
                   subdivide_help_footer(), &declare_subdivide_options, &run_subdivide_command),
+      add_command(app, "join",
+                  "join mesh patches to the trimmed faces of a surface model (JSON, STEP, IGES): the Whitney "
+                  "joiner, naive sewing or OpenCASCADE, with errors before/after and certified flip counts "
+                  "(thesis Ch. 4)",
+                  join_help_footer(), &declare_join_options, &run_join_command),
       add_command(app, "experiment",
                   "the kernel-comparison suite: tables on stdout; JSON, pictures and index.html in a results "
                   "folder",

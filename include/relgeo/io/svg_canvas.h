@@ -138,7 +138,13 @@ class Svg_canvas {
   void write(const std::string& path) const { write_text_file(path, str(), "SVG file"); }
 
  private:
-  static std::string attributes(std::string_view style) { return style.empty() ? std::string() : " " + std::string(style); }
+  // Built by appending: GCC 12 warns (-Wrestrict, a false positive) on
+  // " " + std::string&& once inlined into callers.
+  static std::string attributes(std::string_view style) {
+    std::string a;
+    if (!style.empty()) a.append(1, ' ').append(style);
+    return a;
+  }
 
   double width_, height_;
   double left_ = 0, top_ = 0, right_ = 0, bottom_ = 0;

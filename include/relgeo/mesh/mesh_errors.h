@@ -35,7 +35,9 @@ enum class Mesh_defect {
   non_manifold_vertex,       ///< {vertex, number of fans}: the faces at the vertex form several fans
   invalid_tag,               ///< {a, b} crease tag that is not an edge, or {vertex, -} corner out of range
   self_intersection,         ///< {face, face}: two faces intersect other than in shared vertices/edges
-  undecided                  ///< {face, -}: a non-exact kernel could not decide a geometric test
+  misoriented_component,     ///< {first face, component}: a component's orientation and nesting do not
+                             ///< bound a solid (inverted shell, or a shell nested without being a cavity)
+  undecided                  ///< {face, -} or {face, face}: a non-exact kernel could not decide a test
 };
 
 constexpr std::string_view to_string(Mesh_defect d) noexcept {
@@ -51,6 +53,7 @@ constexpr std::string_view to_string(Mesh_defect d) noexcept {
     case Mesh_defect::non_manifold_vertex: return "non_manifold_vertex";
     case Mesh_defect::invalid_tag: return "invalid_tag";
     case Mesh_defect::self_intersection: return "self_intersection";
+    case Mesh_defect::misoriented_component: return "misoriented_component";
     case Mesh_defect::undecided: return "undecided";
   }
   return "unknown";

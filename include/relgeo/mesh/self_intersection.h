@@ -1,20 +1,37 @@
-// relgeo/mesh/self_intersection.h — self-intersection test with exact
-// predicates (CGAL Polygon_mesh_processing over Epick), and check_solid: every
-// check of check_mesh plus this one.
+// relgeo/mesh/self_intersection.h — the exact self-intersection test of a
+// triangle mesh under any relgeo kernel, and check_solid: every check of
+// check_mesh plus this one.
 //
-// Needs CGAL (link relgeo::cgal). Heavy to compile (PMP + box intersection,
-// ~15 s): include it only in the translation units that need it.
+// Broad phase: the pairs of faces whose boxes overlap (Face_bvh). Narrow
+// phase: each pair is decided from the kernel's orientation predicates by
+// what the two faces share (internal/face_pair_predicates.h: no vertex ->
+// an edge of one meets the other; a vertex -> the opposite edges against
+// the other face; an edge -> folded onto each other; all three -> identical).
+// Under Filtered_exact_kernel (the default for double coordinates) and
+// Exact_kernel every pair is decided exactly; a fail-safe or interval
+// kernel lists the pairs it cannot decide instead of guessing. It decides
+// what CGAL::Polygon_mesh_processing::self_intersections decides over an
+// exact kernel (test/mesh/solid_validation_cgal_test.cpp: CGAL's data set
+// against Epeck), without CGAL and faster than it over Epick
+// (benchmark/mesh, doc/mesh.md).
 #pragma once
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
+#include <gmpxx.h>
 
 #include <algorithm>
-#include <iterator>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "relgeo/core/errors.h"
+#include "relgeo/kernel/exact_kernel.h"
+#include "relgeo/kernel/filtered_exact_kernel.h"
+#include "relgeo/mesh/face_bvh.h"
+#include "relgeo/mesh/internal/face_pair_predicates.h"
+#include "relgeo/mesh/internal/kernel_points.h"
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/mesh_topology.h"
@@ -23,42 +40,163 @@
 
 namespace relgeo {
 
-/// \brief The pairs of faces (f < g) that intersect other than in a shared
-/// vertex or a shared edge.
-///
-/// Decided with exact predicates (CGAL::Epick, through
-/// Polygon_mesh_processing::self_intersections) on the double coordinates of
-/// the points: exact for double input; other coordinates are first rounded to
-/// double (coordinate_to_double), which a certificate must state.
-/// \pre The mesh is edge- and vertex-manifold with finite coordinates
-/// (\throws Invalid_mesh otherwise: CGAL's half-edge mesh cannot hold it).
+/// The kernel self-intersection tests use when the caller names none:
+/// Exact_kernel for rational coordinates, Filtered_exact_kernel otherwise
+/// (on the coordinates' nearest doubles: exact for double input).
 template <class P>
+struct Default_self_intersection_kernel {
+  using type = std::conditional_t<std::is_same_v<typename internal::Point_access<P>::FT, mpq_class>, Exact_kernel,
+                                  Filtered_exact_kernel>;
+};
+
+/// Options of find_self_intersections.
+struct Self_intersection_options {
+  /// Threads for the broad and narrow phases (1: serial; 0: every hardware
+  /// thread; more than one only with TBB). The result does not depend on it.
+  int threads = 1;
+};
+
+/// What find_self_intersections found.
+struct Self_intersections {
+  /// Pairs (f < g, sorted) that certainly meet other than in a shared
+  /// vertex or edge.
+  std::vector<Face_pair> pairs;
+  /// Pairs the kernel could not decide (fail-safe and interval kernels).
+  std::vector<Face_pair> undecided;
+  /// Faces not tested: a vertex repeated, or three collinear corners (as
+  /// the kernel decides it; `undecided_faces` when it cannot).
+  std::vector<Index> degenerate_faces;
+  std::vector<Index> undecided_faces;
+  /// Pairs of faces whose boxes overlap (the narrow phase's work).
+  std::size_t candidate_pairs = 0;
+  /// The kernel's points are the mesh's coordinates exactly (false when
+  /// they were rounded to the kernel's number type).
+  bool coordinates_exact = true;
+
+  /// No pair meets and every face and pair was decided.
+  bool is_certainly_free() const { return pairs.empty() && undecided.empty() && undecided_faces.empty(); }
+};
+
+namespace internal {
+
+/// The narrow phase on candidate pairs from `bvh`, for points already in K
+/// and faces flagged degenerate (1), undecided (2) or testable (0).
+template <class K, class Points>
+void find_self_intersections(const K& k, const Points& point, const std::vector<Triangle>& faces,
+                             const std::vector<unsigned char>& skip, const Face_bvh& bvh, int threads,
+                             Self_intersections& out) {
+  struct Hit {
+    Face_pair pair;
+    bool decided;  // false: undecided
+  };
+  const std::vector<Hit> hits = bvh.collect_overlapping_pairs<Hit>(
+      [&](Index f, Index g, std::vector<Hit>& found) {
+        if (skip[f] || skip[g]) return;
+        const Maybe meet = faces_meet_beyond_shared(k, point, faces[f], faces[g]);
+        if (!meet) found.push_back({{f, g}, false});
+        else if (*meet) found.push_back({{f, g}, true});
+      },
+      threads, &out.candidate_pairs);
+  for (const Hit& h : hits) (h.decided ? out.pairs : out.undecided).push_back(h.pair);
+  std::sort(out.pairs.begin(), out.pairs.end());
+  std::sort(out.undecided.begin(), out.undecided.end());
+}
+
+/// Flags degenerate faces (1: repeated vertex or collinear; 2: undecided).
+/// Three points are collinear iff their orientation is zero in each of the
+/// three coordinate planes (the components of the normal): one definite
+/// nonzero projection decides, so a kernel that doubts one projection (a
+/// nearly vertical face seen from above) still decides through another.
+template <class K, class Points>
+std::vector<unsigned char> degenerate_face_flags(const K& k, const Points& point, const std::vector<Triangle>& faces) {
+  using A = Point_access<typename K::Point_3>;
+  using P2 = typename K::Point_2;
+  const auto orient = k.orientation_2_object();
+  const auto project = [](const typename K::Point_3& p, int plane) {
+    switch (plane) {
+      case 0: return P2{A::x(p), A::y(p)};
+      case 1: return P2{A::y(p), A::z(p)};
+      default: return P2{A::z(p), A::x(p)};
+    }
+  };
+  std::vector<unsigned char> flag(faces.size(), 0);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const Triangle& t = faces[f];
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+      flag[f] = 1;
+      continue;
+    }
+    bool zero = true;
+    for (int plane = 0; plane < 3; ++plane) {
+      const Certified_sign s = orient(project(point[t[0]], plane), project(point[t[1]], plane),
+                                      project(point[t[2]], plane));
+      if (s == Certified_sign::positive || s == Certified_sign::negative) {
+        zero = false;
+        flag[f] = 0;
+        break;
+      }
+      if (!is_certain(s)) zero = false, flag[f] = 2;
+    }
+    if (zero) flag[f] = 1;
+  }
+  return flag;
+}
+
+}  // namespace internal
+
+/// \brief Every pair of faces (f < g) of `m` that meet other than in a
+/// shared vertex or a shared edge, decided with K's predicates (see the
+/// file comment), with the pairs K could not decide and the degenerate
+/// faces that were not tested.
+///
+/// Works on any triangle soup with valid indices (manifold or not: faces
+/// share what their vertex indices say they share; two vertices at one
+/// position are different vertices, so faces meeting there intersect).
+/// Requires a Kernel (every IntersectionKernel_3 is one). \throws
+/// Invalid_mesh for an index out of range or a non-finite coordinate.
+/// Complexity O(n log n + k) for n faces and k overlapping box pairs.
+template <class K, class P>
+Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k,
+                                           const Self_intersection_options& options) {
+  const Face_bvh bvh(m, {.threads = options.threads});  // throws for bad indices and NaN
+  const internal::Kernel_points<K, P> point(m.vertices, k);
+  Self_intersections out;
+  out.coordinates_exact = point.exact();
+  const std::vector<unsigned char> skip = internal::degenerate_face_flags(k, point, m.faces);
+  for (Index f = 0; f < skip.size(); ++f)
+    if (skip[f]) (skip[f] == 1 ? out.degenerate_faces : out.undecided_faces).push_back(f);
+  internal::find_self_intersections(k, point, m.faces, skip, bvh, options.threads, out);
+  return out;
+}
+/// The same with K's default object (K: by default
+/// Default_self_intersection_kernel<P>).
+template <class K = void, class P>
+Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const Self_intersection_options& options = {}) {
+  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_self_intersection_kernel<P>::type, K>;
+  return find_self_intersections(m, Kernel{}, options);
+}
+
+/// \brief The pairs of faces (f < g, sorted) that intersect other than in a
+/// shared vertex or a shared edge, decided exactly (K: by default
+/// Filtered_exact_kernel on double coordinates — other coordinates are
+/// rounded to double first, which a certificate must state — or
+/// Exact_kernel on rationals). Degenerate faces are not tested (check_mesh
+/// reports them).
+/// \pre The mesh is edge- and vertex-manifold with finite coordinates
+/// (\throws Invalid_mesh otherwise; find_self_intersections has no such
+/// precondition). \throws Error (computation_failure) when K leaves a pair
+/// undecided: use find_self_intersections with such kernels.
+template <class K = void, class P>
 std::vector<std::pair<Index, Index>> self_intersections(const Triangle_mesh<P>& m) {
-  using SM = CGAL::Surface_mesh<CGAL::Epick::Point_3>;
-  using A = internal::Point_access<P>;
   (void)Mesh_topology::build(m);  // throws Invalid_mesh for non-manifold input
-  SM sm;
-  std::vector<SM::Vertex_index> vs;
-  vs.reserve(m.vertices.size());
-  for (const P& p : m.vertices) {
-    if (!internal::point_is_finite(p))
-      throw Invalid_mesh("self_intersections", {{Mesh_defect::non_finite_coordinate,
-                                                 {static_cast<Index>(vs.size()), invalid_index}}});
-    vs.push_back(sm.add_vertex(CGAL::Epick::Point_3(internal::coordinate_to_double(A::x(p)),
-                                                    internal::coordinate_to_double(A::y(p)),
-                                                    internal::coordinate_to_double(A::z(p)))));
-  }
-  for (Index f = 0; f < m.faces.size(); ++f) {
-    const auto& t = m.faces[f];
-    if (sm.add_face(vs[t[0]], vs[t[1]], vs[t[2]]) == SM::null_face())
-      throw Invalid_mesh("self_intersections", {{Mesh_defect::non_manifold_vertex, {t[0], invalid_index}}});
-  }
-  std::vector<std::pair<SM::Face_index, SM::Face_index>> pairs;
-  CGAL::Polygon_mesh_processing::self_intersections(sm, std::back_inserter(pairs));
+  const Self_intersections r = find_self_intersections<K>(m);
+  if (!r.undecided.empty() || !r.undecided_faces.empty())
+    throw Error(Error_code::computation_failure,
+                "self_intersections: the kernel left " + std::to_string(r.undecided.size()) + " pairs and " +
+                    std::to_string(r.undecided_faces.size()) + " faces undecided");
   std::vector<std::pair<Index, Index>> out;
-  for (const auto& [f, g] : pairs)
-    out.emplace_back(std::min<Index>(f.idx(), g.idx()), std::max<Index>(f.idx(), g.idx()));
-  std::sort(out.begin(), out.end());
+  out.reserve(r.pairs.size());
+  for (const Face_pair& p : r.pairs) out.emplace_back(p.first, p.second);
   return out;
 }
 
@@ -66,7 +204,8 @@ std::vector<std::pair<Index, Index>> self_intersections(const Triangle_mesh<P>& 
 /// manifold with finite coordinates; otherwise self_intersections_checked
 /// stays false). A valid report certifies a closed (when required), 2-manifold,
 /// consistently oriented, non-degenerate, self-intersection-free triangle
-/// mesh: the boundary of a solid (thesis Sec. 5.4.2).
+/// mesh. validate_solid (solid_validation.h) adds orientation, volume and
+/// topology in a structured report.
 template <class K = void, class P>
 Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& options = {}) {
   Mesh_report r = check_mesh<K>(m, options);

@@ -1,7 +1,8 @@
 // relgeo/mesh/validity.h — validity checks with a typed report (thesis Sec.
 // 5.4.2; SPEC Sec. 5 step 5): closed, 2-manifold, consistently oriented, no
-// degenerate faces, finite coordinates, valid tags. Self-intersection, which
-// needs CGAL, is added by self_intersection.h (check_solid).
+// degenerate faces, finite coordinates, valid tags. Self-intersection is
+// added by self_intersection.h (check_solid); the structured report with
+// orientation, volume and topology is solid_validation.h (validate_solid).
 #pragma once
 
 #include <algorithm>
@@ -78,37 +79,34 @@ struct Mesh_report {
   }
 };
 
-/// \brief Checks a triangle mesh and lists every defect with its location.
-///
-/// Combinatorial checks (exact by nature): indices in range, repeated
-/// vertices in a face, edges with more than two faces, edges traversed twice
-/// in the same direction, vertices whose faces form several fans, boundary
-/// edges (when options.require_closed), isolated vertices, invalid tags.
-/// Geometric checks: non-finite coordinates; collinear faces through K's
-/// coplanar_orientation_3 (an `uncertain` answer gives an `undecided` issue).
-/// Never throws for bad input. Complexity O(V + F).
-template <class K = void, class P>
-Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& options = {}) {
-  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_check_kernel<P>::type, K>;
-  using A = internal::Point_access<P>;
+namespace internal {
+
+/// Every check of check_mesh except the collinearity test (which needs a
+/// kernel): indices, repeated vertices, edges and vertices, boundary,
+/// isolated vertices, tags, non-finite coordinates. Never throws for bad
+/// input; O(V + F).
+template <class P>
+Mesh_report combinatorial_mesh_report(const Triangle_mesh<P>& m, const Mesh_check_options& options) {
   Mesh_report r;
   const std::size_t nv = m.vertices.size();
   for (Index v = 0; v < nv; ++v)
     if (!internal::point_is_finite(m.vertices[v]))
       r.issues.push_back({Mesh_defect::non_finite_coordinate, {v, invalid_index}});
   const Mesh_topology t = Mesh_topology::build_checked(nv, m.faces, r.issues);
+  // An edge whose other side failed to pair (non-manifold / misoriented) is
+  // already reported; report true boundary edges only (looked up in the
+  // sorted reported edges: linear in the number of edges).
+  std::vector<Edge> reported;
+  for (const Mesh_issue& i : r.issues)
+    if (i.defect == Mesh_defect::non_manifold_edge || i.defect == Mesh_defect::inconsistent_orientation)
+      reported.push_back({i.elements[0], i.elements[1]});
+  std::sort(reported.begin(), reported.end());
   for (Index e = 0; e < t.number_of_edges(); ++e)
     if (options.require_closed && t.is_boundary_edge(e)) {
       const Edge ab = t.edge_vertices(e);
-      // an edge whose other side failed to pair (non-manifold / misoriented)
-      // is already reported; report true boundary edges only
       const Index h = t.edge_halfedge(e);
       if (t.find_halfedge(t.target(h), t.source(h)) == invalid_index &&
-          std::count_if(r.issues.begin(), r.issues.end(), [&](const Mesh_issue& i) {
-            return (i.defect == Mesh_defect::non_manifold_edge ||
-                    i.defect == Mesh_defect::inconsistent_orientation) &&
-                   i.elements[0] == ab.a && i.elements[1] == ab.b;
-          }) == 0)
+          !std::binary_search(reported.begin(), reported.end(), ab))
         r.issues.push_back({Mesh_defect::boundary_edge, {ab.a, ab.b}});
     }
   if (options.report_isolated_vertices) {
@@ -124,6 +122,26 @@ Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& opti
       r.issues.push_back({Mesh_defect::invalid_tag, {c.a, c.b}});
   for (Index v : m.tags.corners())
     if (v >= nv) r.issues.push_back({Mesh_defect::invalid_tag, {v, invalid_index}});
+  return r;
+}
+
+}  // namespace internal
+
+/// \brief Checks a triangle mesh and lists every defect with its location.
+///
+/// Combinatorial checks (exact by nature): indices in range, repeated
+/// vertices in a face, edges with more than two faces, edges traversed twice
+/// in the same direction, vertices whose faces form several fans, boundary
+/// edges (when options.require_closed), isolated vertices, invalid tags.
+/// Geometric checks: non-finite coordinates; collinear faces through K's
+/// coplanar_orientation_3 (an `uncertain` answer gives an `undecided` issue).
+/// Never throws for bad input. Complexity O(V + F).
+template <class K = void, class P>
+Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& options = {}) {
+  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_check_kernel<P>::type, K>;
+  using A = internal::Point_access<P>;
+  Mesh_report r = internal::combinatorial_mesh_report(m, options);
+  const std::size_t nv = m.vertices.size();
   if (options.check_collinear_faces) {
     const Kernel k{};
     const auto collinear = k.coplanar_orientation_3_object();

@@ -62,17 +62,23 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
-#include <map>
-#include <mutex>
 #include <utility>
 #include <vector>
 
-#include "relgeo/core/fp_environment.h"
+#include "relgeo/core/certified_sign.h"
 #include "relgeo/core/errors.h"
+#include "relgeo/core/fp_environment.h"
+#include "relgeo/core/number_traits.h"
+#include "relgeo/core/rounding.h"
+#include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/box_spline.h"
+#include "relgeo/subdivision/internal/bound_ranges.h"
+#include "relgeo/subdivision/internal/local_patch.h"
+#include "relgeo/subdivision/internal/point_algebra.h"
+#include "relgeo/subdivision/internal/tent.h"
 #include "relgeo/subdivision/limit_evaluation.h"
+#include "relgeo/subdivision/loop_masks.h"
 #include "relgeo/subdivision/loop_subdivision.h"
 
 namespace relgeo {
@@ -110,194 +116,6 @@ struct Loop_face_bound {
   double lower_distance = 0, upper_distance = 0;
 };
 
-namespace internal {
-
-/// min and max that stay enclosures for intervals.
-template <class FT>
-FT min_of(const FT& a, const FT& b) {
-  if constexpr (requires { a.inf(); a.sup(); }) return FT(std::min(a.inf(), b.inf()), std::min(a.sup(), b.sup()));
-  else return b < a ? b : a;
-}
-template <class FT>
-FT max_of(const FT& a, const FT& b) {
-  if constexpr (requires { a.inf(); a.sup(); }) return FT(std::max(a.inf(), b.inf()), std::max(a.sup(), b.sup()));
-  else return a < b ? b : a;
-}
-/// A double <= (>=) the value (rounded outward).
-template <class FT>
-double lower_double(const FT& x) {
-  if constexpr (requires { x.inf(); }) return x.inf();
-  else if constexpr (std::is_same_v<FT, double>) return x;
-  else return std::nextafter(coordinate_to_double(x), -INFINITY);
-}
-template <class FT>
-double upper_double(const FT& x) {
-  if constexpr (requires { x.sup(); }) return x.sup();
-  else if constexpr (std::is_same_v<FT, double>) return x;
-  else return std::nextafter(coordinate_to_double(x), INFINITY);
-}
-/// a <= b possibly (exactly for exact types; with a relative tolerance for
-/// floating point, where excluding a candidate by rounding would be unsound
-/// and including one only loosens).
-template <class FT>
-bool possibly_le(const FT& a, const FT& b, double tol) {
-  if constexpr (requires { a.inf(); b.sup(); }) return a.inf() <= b.sup();
-  else if constexpr (std::is_floating_point_v<FT>) return a <= b + tol;
-  else return !(b < a);
-}
-
-/// Adds the ranges over the Bezier nets of a regular patch (12 x dim values,
-/// row-major) refined `depth` times to lo/hi (per dim).
-template <class FT>
-void regular_net_ranges(const std::vector<FT>& net, std::size_t dim, unsigned depth, const FT& one_24,
-                        const FT& one_16, std::vector<FT>& lo, std::vector<FT>& hi, std::vector<bool>& have) {
-  if (depth == 0) {
-    for (std::size_t d = 0; d < dim; ++d) {
-      const std::array<FT, 15> b = loop_patch_bezier_times_24(net.data() + d, dim);
-      for (const FT& x24 : b) {
-        const FT x = FT(x24 * one_24);
-        lo[d] = have[d] ? min_of(lo[d], x) : x;
-        hi[d] = have[d] ? max_of(hi[d], x) : x;
-        have[d] = true;
-      }
-    }
-    return;
-  }
-  std::vector<FT> child(12 * dim);
-  for (int c = 0; c < 4; ++c) {
-    for (std::size_t d = 0; d < dim; ++d) {
-      const std::array<FT, 12> r = loop_patch_child_times_16(net.data() + d, c, dim);
-      for (int i = 0; i < 12; ++i) child[i * dim + d] = FT(r[i] * one_16);
-    }
-    regular_net_ranges(child, dim, depth - 1, one_24, one_16, lo, hi, have);
-  }
-}
-
-/// The vertices whose values the limit over face f depends on: the vertices
-/// of the faces around each corner of f, except, at a crease vertex or
-/// corner, the faces of its other sectors (crease rules never look across a
-/// crease). The limit over f is a convex combination of these values (Loop's
-/// weights are nonnegative and the children's sets are built from them).
-inline std::vector<Index> influence_vertices(const Mesh_topology& t, const Loop_rule_data& d, Index f) {
-  std::vector<Index> out;
-  const auto add_face = [&](Index g) {
-    for (Index v : t.faces()[g])
-      if (std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
-  };
-  for (int k = 0; k < 3; ++k) {
-    const Index h = 3 * f + Index(k), a = t.source(h);
-    if (!d.special(a)) {
-      t.for_each_outgoing(a, [&](Index g) { add_face(Mesh_topology::face(g)); });
-      continue;
-    }
-    Index first = h;  // clockwise to the crease half-edge starting the sector
-    for (Index guard = 0; guard <= t.number_of_incident_faces(a) && !d.crease[first]; ++guard)
-      first = Mesh_topology::next(t.opposite(first));
-    Index g = first;
-    for (Index guard = 0; guard < t.number_of_incident_faces(a) && g != invalid_index; ++guard) {
-      add_face(Mesh_topology::face(g));
-      g = t.ccw_outgoing(g);
-      if (g == invalid_index || d.crease[g]) break;
-    }
-  }
-  return out;
-}
-
-/// Ranges (per dim) of the limit of a local patch's values over its face 0:
-/// Bezier hulls of regular sub-patches, hull of the control values of the
-/// irregular sub-patch left after irregular_depth steps.
-template <class K>
-void local_patch_ranges(const Loop_local_patch<typename K::FT>& P, const Loop_weights<K>& w,
-                        unsigned irregular_depth, unsigned regular_depth, const typename K::FT& one_24,
-                        const typename K::FT& one_16, std::vector<typename K::FT>& lo,
-                        std::vector<typename K::FT>& hi, std::vector<bool>& have) {
-  using FT = typename K::FT;
-  const std::size_t dim = P.dim;
-  const Mesh_topology t = local_topology(P);
-  std::array<Patch_slot, 12> s;
-  if (classify_loop_patch(t, P.rules, w.options(), 0, &s) != Loop_patch_kind::irregular) {
-    std::vector<FT> net(12 * dim);
-    for (int i = 0; i < 12; ++i) {
-      const FT* a = P.value(s[i].a);
-      for (std::size_t d = 0; d < dim; ++d) net[i * dim + d] = a[d];
-      if (s[i].is_ghost()) {
-        const FT *b = P.value(s[i].b), *c = P.value(s[i].c);
-        for (std::size_t d = 0; d < dim; ++d) net[i * dim + d] = FT(FT(a[d] + b[d]) - c[d]);
-      }
-    }
-    regular_net_ranges(net, dim, regular_depth, one_24, one_16, lo, hi, have);
-    return;
-  }
-  if (irregular_depth == 0) {
-    for (Index v : influence_vertices(t, P.rules, 0))
-      for (std::size_t d = 0; d < dim; ++d) {
-        const FT& x = P.value(v)[d];
-        lo[d] = have[d] ? min_of(lo[d], x) : x;
-        hi[d] = have[d] ? max_of(hi[d], x) : x;
-        have[d] = true;
-      }
-    return;
-  }
-  const auto children = refine_local_patch<K>(P, t, w, 0xFu);
-  for (const auto& c : children)
-    local_patch_ranges<K>(c, w, irregular_depth - 1, regular_depth, one_24, one_16, lo, hi, have);
-}
-
-/// An affine function tau + rho a + sigma b of the face coordinates.
-template <class FT>
-struct Affine_2 {
-  FT tau, rho, sigma;
-  FT operator()(const FT& a, const FT& b) const { return FT(FT(tau + FT(rho * a)) + FT(sigma * b)); }
-};
-
-/// max over D' = {a >= amin, b >= bmin, a + b <= s} of min_k f_k(a, b),
-/// from the vertices of the arrangement (D''s corners, crossings of the lines
-/// f_k = f_l with D''s edges, points where three f are equal). False when a
-/// determinant cannot be certified nonzero-or-zero (intervals).
-template <class FT, class Tr>
-bool tent_maximum(const std::vector<Affine_2<FT>>& f, const FT& amin, const FT& bmin, const FT& s, double tol,
-                  FT& result) {
-  struct Line {
-    FT p, q, r;  // p a + q b = r
-  };
-  std::vector<Line> lines{{FT(1), FT(0), amin}, {FT(0), FT(1), bmin}, {FT(1), FT(1), s}};
-  const std::size_t nedge = 3;
-  for (std::size_t k = 0; k < f.size(); ++k)
-    for (std::size_t l = k + 1; l < f.size(); ++l)
-      lines.push_back({FT(f[k].rho - f[l].rho), FT(f[k].sigma - f[l].sigma), FT(f[l].tau - f[k].tau)});
-  bool have = false, ok = true;
-  const auto consider = [&](const FT& a, const FT& b) {
-    if (!possibly_le(amin, a, tol) || !possibly_le(bmin, b, tol) || !possibly_le(FT(a + b), s, tol)) return;
-    FT v = f[0](a, b);
-    for (std::size_t k = 1; k < f.size(); ++k) v = min_of(v, f[k](a, b));
-    result = have ? max_of(result, v) : v;
-    have = true;
-  };
-  const auto intersect = [&](const Line& x, const Line& y) {
-    const FT det = FT(FT(x.p * y.q) - FT(y.p * x.q));
-    if constexpr (requires { det.inf(); }) {
-      if (det.inf() == 0 && det.sup() == 0) return;
-      if (!(det.inf() > 0 || det.sup() < 0)) {
-        ok = false;
-        return;
-      }
-    } else {
-      if (det == FT(0)) return;
-    }
-    consider(Tr::quotient(FT(FT(x.r * y.q) - FT(y.r * x.q)), det), Tr::quotient(FT(FT(x.p * y.r) - FT(y.p * x.r)), det));
-  };
-  for (std::size_t i = 0; i < nedge; ++i)
-    for (std::size_t j = i + 1; j < lines.size(); ++j) intersect(lines[i], lines[j]);
-  // three equal functions: two of the pair lines through a common k
-  for (std::size_t k = 0; k < f.size(); ++k)
-    for (std::size_t l = k + 1; l < f.size(); ++l)
-      for (std::size_t m = l + 1; m < f.size(); ++m)
-        intersect(Line{FT(f[k].rho - f[l].rho), FT(f[k].sigma - f[l].sigma), FT(f[l].tau - f[k].tau)},
-                  Line{FT(f[k].rho - f[m].rho), FT(f[k].sigma - f[m].sigma), FT(f[m].tau - f[k].tau)});
-  return ok && have;
-}
-
-}  // namespace internal
 
 /// \brief The limit mesh at a level with, per face, enclosures of the limit
 /// surface over it (see the file comment for the methods).
@@ -322,11 +140,11 @@ struct Loop_limit_mesh_bounds {
   /// The height t of point x over face f (x = q0 + a E1 + b E2 + t n).
   FT height(Index f, const Point_3<FT>& x) const {
     using A = internal::Point_access<Point>;
-    const Point& q = limit_mesh.vertices[limit_mesh.faces[f][0]];
+    const Point& qp = limit_mesh.vertices[limit_mesh.faces[f][0]];
+    const Point_3<FT> q{A::x(qp), A::y(qp), A::z(qp)};
     const Point_3<FT>& n = normal[f];
-    const FT nn = FT(FT(FT(n.x * n.x) + FT(n.y * n.y)) + FT(n.z * n.z));
-    const FT d = FT(FT(FT(n.x * FT(x.x - A::x(q))) + FT(n.y * FT(x.y - A::y(q)))) + FT(n.z * FT(x.z - A::z(q))));
-    return Loop_kernel_number_traits<K>::quotient(d, nn);
+    return Loop_kernel_number_traits<K>::quotient(internal::point_dot(n, internal::point_difference(x, q)),
+                                                  internal::point_dot(n, n));
   }
 };
 
@@ -337,9 +155,11 @@ struct Loop_limit_mesh_bounds {
 /// of the refined mesh). Requirements and errors as Loop_subdivider; also
 /// Error (computation_failure) when a face normal overflows the number type.
 /// Complexity: O(F) with a per-face constant: regular faces reuse the
-/// universal ranges of the 12 box-spline functions (computed once per
-/// object), irregular faces (one per face around an irregular vertex)
+/// universal ranges of the 12 box-spline functions (computed once, by the
+/// constructor), irregular faces (one per face around an irregular vertex)
 /// subdivide locally (~3 irregular_depth regular sub-patches).
+/// Thread safety: the object is immutable after construction and compute()
+/// keeps its scratch on its own stack: one object can serve many threads.
 template <class K>
 class Loop_error_bounds {
  public:
@@ -348,10 +168,12 @@ class Loop_error_bounds {
   using Mesh = Triangle_mesh<Point>;
   using Tr = Loop_kernel_number_traits<K>;
 
-  explicit Loop_error_bounds(const Loop_options& options = {}, const Loop_bound_options& bounds = {}, const K& kernel = K{})
-      : options_(options), bounds_(bounds), kernel_(kernel), one_24_(Tr::rational(1, 24)), one_16_(Tr::rational(1, 16)) {
-    universal_ = universal_ranges(bounds.universal_depth, one_24_, one_16_);
-  }
+  /// The kernel argument is accepted for a uniform interface: the bounds use
+  /// only K's number type, never a kernel object.
+  explicit Loop_error_bounds(const Loop_options& options = {}, const Loop_bound_options& bounds = {},
+                             const K& /*kernel*/ = K{})
+      : options_(options), bounds_(bounds), one_24_(fraction(1, 24)), one_16_(fraction(1, 16)),
+        universal_(universal_ranges(bounds.universal_depth, one_24_, one_16_)) {}
 
   const Loop_options& options() const { return options_; }
   const Loop_bound_options& bound_options() const { return bounds_; }
@@ -364,10 +186,10 @@ class Loop_error_bounds {
     const Default_fp_environment environment;  // the bounds are rounded outward in hardware
     Loop_limit_mesh_bounds<K> r;
     r.level = level;
-    Loop_subdivider<K> sub(options_, kernel_);
+    Loop_subdivider<K> sub(options_);
     r.refined = sub.refine(control, level);
     r.limit_mesh = sub.limit_mesh(control, level);
-    const Loop_limit_surface<K> surface(r.refined, options_, kernel_);
+    const Loop_limit_surface<K> surface(r.refined, options_);
     Loop_weights<K> w(options_);
     Index max_valence = 6;
     for (Index v = 0; v < r.refined.vertices.size(); ++v) max_valence = std::max(max_valence, surface.topology().valence(v));
@@ -377,10 +199,9 @@ class Loop_error_bounds {
     r.basis_range.resize(nf), r.tangent_plane.resize(nf);
     if (bounds_.direct) r.direct.resize(nf);
     if (bounds_.thesis_estimate) r.thesis_estimate.resize(nf);
-    const std::vector<Point_3<FT>>& p = surface.control_points();
-    std::vector<Point_3<FT>> q(r.limit_mesh.vertices.size());
+    std::vector<P3> q(r.limit_mesh.vertices.size());
     for (std::size_t v = 0; v < q.size(); ++v) q[v] = {A::x(r.limit_mesh.vertices[v]), A::y(r.limit_mesh.vertices[v]), A::z(r.limit_mesh.vertices[v])};
-    for (Index g = 0; g < nf; ++g) face_bounds(surface, w, p, q, g, r);
+    for (Index g = 0; g < nf; ++g) face_bounds(surface, w, q, g, r);
     return r;
   }
 
@@ -388,139 +209,177 @@ class Loop_error_bounds {
   using A = internal::Point_access<Point>;
   using P3 = Point_3<FT>;
 
-  static P3 sub3(const P3& a, const P3& b) { return {FT(a.x - b.x), FT(a.y - b.y), FT(a.z - b.z)}; }
-  static FT dot(const P3& a, const P3& b) { return FT(FT(FT(a.x * b.x) + FT(a.y * b.y)) + FT(a.z * b.z)); }
-  static P3 cross(const P3& a, const P3& b) {
-    return {FT(FT(a.y * b.z) - FT(a.z * b.y)), FT(FT(a.z * b.x) - FT(a.x * b.z)), FT(FT(a.x * b.y) - FT(a.y * b.x))};
-  }
-  static P3 scale(const P3& a, const FT& s) { return {FT(a.x * s), FT(a.y * s), FT(a.z * s)}; }
-  static P3 divide(const P3& a, const FT& s) { return {Tr::quotient(a.x, s), Tr::quotient(a.y, s), Tr::quotient(a.z, s)}; }
-
   // phi(x) = dir . x + offset
   struct Functional {
     P3 dir;
     FT offset;
-    FT operator()(const P3& x) const { return FT(dot(dir, x) + offset); }
+    FT operator()(const P3& x) const { return FT(internal::point_dot(dir, x) + offset); }
+  };
+  // Lower and upper bound of |n| (see length_bounds).
+  struct Length_bounds {
+    double lo, hi;
+  };
+  // Face g of the limit mesh: corners q_j, E1 = q1 - q0, E2 = q2 - q0,
+  // n = E1 x E2, the exact limit normals n_j at the corners.
+  struct Face_frame {
+    P3 q[3], E1, E2, n;
+    FT nn;
+    Length_bounds length;
+    std::array<P3, 3> nj;
+  };
+  // The control points the limit over a face depends on, with the ranges of
+  // their nodal functions over the face; for an irregular face also its
+  // local patch (geometry not filled in).
+  struct Face_control {
+    std::vector<P3> points;
+    std::vector<FT> bmin, bmax;
+    bool regular = false;
+    internal::Loop_local_patch<FT> local;
   };
 
-  static bool certainly_zero_or_contains_zero(const FT& x) {
-    if constexpr (requires { x.inf(); }) return !(x.inf() > 0 || x.sup() < 0);
-    else return x == FT(0);
-  }
-  static bool certainly_positive(const FT& x) {
-    if constexpr (requires { x.inf(); }) return x.inf() > 0;
-    else return FT(0) < x;
-  }
-  static bool certainly_negative(const FT& x) {
-    if constexpr (requires { x.sup(); }) return x.sup() < 0;
-    else return x < FT(0);
+  static P3 divide(const P3& a, const FT& s) { return {Tr::quotient(a.x, s), Tr::quotient(a.y, s), Tr::quotient(a.z, s)}; }
+
+  void face_bounds(const Loop_limit_surface<K>& surface, Loop_weights<K>& w, const std::vector<P3>& q, Index g,
+                   Loop_limit_mesh_bounds<K>& r) const {
+    const Triangle& tri = r.refined.faces[g];
+    r.patch_kind[g] = surface.patch_kind(g);
+    Face_frame fr;
+    if (!face_frame(q, tri, g, r, fr)) return;
+    for (int j = 0; j < 3; ++j) {
+      const auto [s1, s2] = tangent_stencils(surface.topology(), surface.features(), w, tri[j], 3 * g + Index(j));
+      fr.nj[j] = internal::point_cross(apply_stencil(s1, surface.control_points()), apply_stencil(s2, surface.control_points()));
+    }
+    const std::vector<Functional> phi = functionals(fr);
+    const Face_control control = face_control(surface, w, g);
+    std::vector<FT> lo, hi;
+    nodal_ranges(phi, control, lo, hi);
+    const FT L = lo[0], U = hi[0];
+    r.basis_range[g] = make_bound(L, U, fr.length);
+    const bool aux_direct = bounds_.tangent_ranges == Loop_bound_options::Tangent_ranges::direct;
+    std::vector<FT> dlo, dhi;
+    if (bounds_.direct || aux_direct) {
+      direct_ranges(phi, control, w, dlo, dhi);
+      if (bounds_.direct) r.direct[g] = make_bound(dlo[0], dhi[0], fr.length);
+    }
+    r.tangent_plane[g] = tangent_plane_bound(fr, L, U, aux_direct ? dlo : lo, aux_direct ? dhi : hi);
+    if (bounds_.thesis_estimate) r.thesis_estimate[g] = thesis(fr, L, U, r.normal_length[g]);
   }
 
-  void face_bounds(const Loop_limit_surface<K>& surface, Loop_weights<K>& w, const std::vector<P3>& p,
-                   const std::vector<P3>& q, Index g, Loop_limit_mesh_bounds<K>& r) const {
-    const Triangle& tri = r.refined.faces[g];
-    const P3 &q0 = q[tri[0]], &q1 = q[tri[1]], &q2 = q[tri[2]];
-    const P3 E1 = sub3(q1, q0), E2 = sub3(q2, q0), n = cross(E1, E2);
-    const FT nn = dot(n, n);
-    r.normal[g] = n;
-    const double len = std::sqrt(internal::coordinate_to_double(nn));
-    r.normal_length[g] = len;
-    r.patch_kind[g] = surface.patch_kind(g);
+  // The face's corners, edges and normal; false (and marked) when degenerate.
+  static bool face_frame(const std::vector<P3>& q, const Triangle& tri, Index g, Loop_limit_mesh_bounds<K>& r,
+                         Face_frame& fr) {
+    for (int j = 0; j < 3; ++j) fr.q[j] = q[tri[j]];
+    fr.E1 = internal::point_difference(fr.q[1], fr.q[0]), fr.E2 = internal::point_difference(fr.q[2], fr.q[0]);
+    fr.n = internal::point_cross(fr.E1, fr.E2);
+    fr.nn = internal::point_dot(fr.n, fr.n);
     // Finite input can overflow here in floating point (|n| ~ |E|^2): refuse
     // rather than return NaN bounds (test/data/bad/coordinates_1e300.off).
-    if (!is_finite_number(nn))
+    if (!is_finite_number(fr.nn))
       throw Error(Error_code::computation_failure, "Loop error bounds: the normal of limit-mesh face " +
                                                        std::to_string(g) +
                                                        " overflows (coordinates too large for the number type)");
-    if (certainly_zero_or_contains_zero(nn) || !(len > 0)) {
+    r.normal[g] = fr.n;
+    const double len = std::sqrt(nearest_double(fr.nn));
+    r.normal_length[g] = len;
+    const Certified_sign s = certified_sign(fr.nn);
+    if (!(s == Certified_sign::positive || s == Certified_sign::negative) || !(len > 0)) {
       r.degenerate[g] = 1;
+      return false;
+    }
+    fr.length = length_bounds(fr.nn);
+    return true;
+  }
+
+  // The functionals: t, a, b, c = 1 - a - b, psi_j = n_j . (x - q_j).
+  static std::vector<Functional> functionals(const Face_frame& fr) {
+    std::vector<Functional> phi;
+    const auto affine = [&](const P3& dir) { return Functional{dir, FT(-internal::point_dot(dir, fr.q[0]))}; };
+    phi.push_back(affine(divide(fr.n, fr.nn)));
+    phi.push_back(affine(divide(internal::point_cross(fr.E2, fr.n), fr.nn)));
+    phi.push_back(affine(divide(internal::point_cross(fr.n, fr.E1), fr.nn)));
+    phi.push_back(Functional{internal::point_scale(FT(-1), internal::point_difference(phi[1].dir, internal::point_scale(FT(-1), phi[2].dir))),
+                             FT(FT(FT(1) - phi[1].offset) - phi[2].offset)});
+    for (int j = 0; j < 3; ++j) phi.push_back(Functional{fr.nj[j], FT(-internal::point_dot(fr.nj[j], fr.q[j]))});
+    return phi;
+  }
+
+  // Regular faces: the 12 control slots with the universal nodal ranges.
+  // Irregular faces: the local patch's vertices with the ranges of their
+  // Dirac nets (one unit vector per local vertex) under local subdivision.
+  Face_control face_control(const Loop_limit_surface<K>& surface, const Loop_weights<K>& w, Index g) const {
+    Face_control c;
+    if (const auto* slots = surface.patch_slots(g)) {
+      c.regular = true;
+      for (int i = 0; i < 12; ++i) {
+        c.points.push_back(surface.slot_point((*slots)[i]));
+        c.bmin.push_back(universal_[i].first), c.bmax.push_back(universal_[i].second);
+      }
+      return c;
+    }
+    std::vector<Index> ids;
+    c.local = internal::extract_local_patch<FT>(surface.topology(), surface.rule_data(), g, 1,
+                                                [](Index, FT* o) { *o = FT(0); }, &ids);
+    const std::size_t nloc = ids.size();
+    internal::Loop_local_patch<FT> dirac = c.local;
+    dirac.dim = nloc;
+    dirac.values.assign(nloc * nloc, FT(0));
+    for (std::size_t i = 0; i < nloc; ++i) dirac.values[i * nloc + i] = FT(1);
+    c.bmin.resize(nloc), c.bmax.resize(nloc);
+    std::vector<bool> have(nloc, false);
+    internal::local_patch_ranges<K>(dirac, w, bounds_.irregular_depth, bounds_.regular_depth, one_24_, one_16_, c.bmin,
+                                    c.bmax, have);
+    for (std::size_t i = 0; i < nloc; ++i) c.points.push_back(surface.control_points()[ids[i]]);
+    return c;
+  }
+
+  // eq. 5.7: the range of each functional over the control points and
+  // their nodal ranges.
+  static void nodal_ranges(const std::vector<Functional>& phi, const Face_control& c, std::vector<FT>& lo,
+                           std::vector<FT>& hi) {
+    const std::size_t nphi = phi.size();
+    lo.resize(nphi), hi.resize(nphi);
+    for (std::size_t i = 0; i < c.points.size(); ++i)
+      for (std::size_t k = 0; k < nphi; ++k) {
+        const FT v = phi[k](c.points[i]);
+        const FT x = FT(v * c.bmin[i]), y = FT(v * c.bmax[i]);
+        const FT mn = internal::min_of(x, y), mx = internal::max_of(x, y);
+        lo[k] = i == 0 ? mn : FT(lo[k] + mn);
+        hi[k] = i == 0 ? mx : FT(hi[k] + mx);
+      }
+  }
+
+  // Direct hulls of the functionals themselves (Bezier hulls of regular
+  // patches, local subdivision of irregular ones).
+  void direct_ranges(const std::vector<Functional>& phi, const Face_control& c, const Loop_weights<K>& w,
+                     std::vector<FT>& dlo, std::vector<FT>& dhi) const {
+    const std::size_t nphi = phi.size();
+    dlo.resize(nphi), dhi.resize(nphi);
+    std::vector<bool> have(nphi, false);
+    std::vector<FT> values(c.points.size() * nphi);
+    for (std::size_t i = 0; i < c.points.size(); ++i)
+      for (std::size_t k = 0; k < nphi; ++k) values[i * nphi + k] = phi[k](c.points[i]);
+    if (c.regular) {
+      internal::regular_net_ranges(values, nphi, bounds_.regular_depth, one_24_, one_16_, dlo, dhi, have);
       return;
     }
-    const Length_bounds length = length_bounds(nn);
-    // The functionals: t, a, b, c = 1 - a - b, psi_j = n_j . (x - q_j).
-    std::vector<Functional> phi;
-    const auto affine = [&](const P3& dir) { return Functional{dir, FT(-dot(dir, q0))}; };
-    phi.push_back(affine(divide(n, nn)));
-    phi.push_back(affine(divide(cross(E2, n), nn)));
-    phi.push_back(affine(divide(cross(n, E1), nn)));
-    phi.push_back(Functional{scale(sub3(phi[1].dir, scale(phi[2].dir, FT(-1))), FT(-1)),
-                             FT(FT(FT(1) - phi[1].offset) - phi[2].offset)});
-    std::array<P3, 3> nj;
-    for (int j = 0; j < 3; ++j) {
-      const auto [s1, s2] = tangent_stencils(surface.topology(), surface.features(), w, tri[j], 3 * g + Index(j));
-      nj[j] = cross(apply_stencil(s1, p), apply_stencil(s2, p));
-      phi.push_back(Functional{nj[j], FT(-dot(nj[j], q[tri[j]]))});
-    }
-    const std::size_t nphi = phi.size();  // 7
-    std::vector<FT> lo(nphi), hi(nphi);
-    // eq. 5.7 over the control points and nodal ranges.
-    const auto accumulate = [&](const P3& point, const FT& bmin, const FT& bmax, bool first) {
-      for (std::size_t k = 0; k < nphi; ++k) {
-        const FT c = phi[k](point);
-        const FT x = FT(c * bmin), y = FT(c * bmax);
-        const FT mn = internal::min_of(x, y), mx = internal::max_of(x, y);
-        lo[k] = first ? mn : FT(lo[k] + mn);
-        hi[k] = first ? mx : FT(hi[k] + mx);
-      }
-    };
-    const auto* slots = surface.patch_slots(g);
-    std::vector<P3> cps;  // control points (direct method)
-    internal::Loop_local_patch<FT> local;
-    if (slots) {
-      for (int i = 0; i < 12; ++i) {
-        cps.push_back(surface.slot_point((*slots)[i]));
-        accumulate(cps.back(), universal_[i].first, universal_[i].second, i == 0);
-      }
-    } else {
-      std::vector<Index> ids;
-      local = internal::extract_local_patch<FT>(surface.topology(), surface.rule_data(), g, 1,
-                                                [](Index, FT* o) { *o = FT(0); }, &ids);
-      // Dirac nets: one unit vector per local vertex.
-      const std::size_t nloc = ids.size();
-      local.dim = nloc;
-      local.values.assign(nloc * nloc, FT(0));
-      for (std::size_t i = 0; i < nloc; ++i) local.values[i * nloc + i] = FT(1);
-      std::vector<FT> blo(nloc), bhi(nloc);
-      std::vector<bool> have(nloc, false);
-      internal::local_patch_ranges<K>(local, w, bounds_.irregular_depth, bounds_.regular_depth, one_24_, one_16_, blo, bhi, have);
-      for (std::size_t i = 0; i < nloc; ++i) {
-        cps.push_back(p[ids[i]]);
-        accumulate(cps.back(), blo[i], bhi[i], i == 0);
-      }
-    }
-    const FT L = lo[0], U = hi[0];
-    r.basis_range[g] = make_bound(L, U, length);
-    // Direct hulls of the 7 functionals (Bezier hulls of regular patches,
-    // local subdivision of irregular ones).
-    const bool need_direct = bounds_.direct || bounds_.tangent_ranges == Loop_bound_options::Tangent_ranges::direct;
-    std::vector<FT> dlo(nphi), dhi(nphi);
-    if (need_direct) {
-      std::vector<bool> have(nphi, false);
-      if (slots) {
-        std::vector<FT> net(12 * nphi);
-        for (int i = 0; i < 12; ++i)
-          for (std::size_t k = 0; k < nphi; ++k) net[i * nphi + k] = phi[k](cps[i]);
-        internal::regular_net_ranges(net, nphi, bounds_.regular_depth, one_24_, one_16_, dlo, dhi, have);
-      } else {
-        internal::Loop_local_patch<FT> hp = local;
-        hp.dim = nphi;
-        hp.values.resize(cps.size() * nphi);
-        for (std::size_t i = 0; i < cps.size(); ++i)
-          for (std::size_t k = 0; k < nphi; ++k) hp.values[i * nphi + k] = phi[k](cps[i]);
-        internal::local_patch_ranges<K>(hp, w, bounds_.irregular_depth, bounds_.regular_depth, one_24_, one_16_, dlo, dhi, have);
-      }
-      if (bounds_.direct) r.direct[g] = make_bound(dlo[0], dhi[0], length);
-    }
-    const bool aux_direct = bounds_.tangent_ranges == Loop_bound_options::Tangent_ranges::direct;
-    const std::vector<FT>& alo = aux_direct ? dlo : lo;
-    const std::vector<FT>& ahi = aux_direct ? dhi : hi;
-    // Tangent planes: t <= T_j(a, b) (upper), t >= B_j(a, b) (lower).
+    internal::Loop_local_patch<FT> hp = c.local;
+    hp.dim = nphi;
+    hp.values = std::move(values);
+    internal::local_patch_ranges<K>(hp, w, bounds_.irregular_depth, bounds_.regular_depth, one_24_, one_16_, dlo, dhi, have);
+  }
+
+  // Tangent planes: t <= T_j(a, b) (upper), t >= B_j(a, b) (lower), from the
+  // ranges [gm, gp] of psi_j = k0 + alpha a + beta b + kappa t; the tents'
+  // maxima over D' cut by the slab [L, U].
+  Loop_face_bound<FT> tangent_plane_bound(const Face_frame& fr, const FT& L, const FT& U, const std::vector<FT>& alo,
+                                          const std::vector<FT>& ahi) const {
     std::vector<internal::Affine_2<FT>> upper{{U, FT(0), FT(0)}}, lower{{FT(-L), FT(0), FT(0)}};
     for (int j = 0; j < 3; ++j) {
-      const FT kappa = dot(nj[j], n), alpha = dot(nj[j], E1), beta = dot(nj[j], E2);
-      const FT k0 = dot(nj[j], sub3(q0, q[tri[j]]));
-      const FT gm = alo[4 + j], gp = ahi[4 + j];
-      // psi = k0 + alpha a + beta b + kappa t in [gm, gp]
+      const P3& nj = fr.nj[j];
+      const FT kappa = internal::point_dot(nj, fr.n), alpha = internal::point_dot(nj, fr.E1),
+               beta = internal::point_dot(nj, fr.E2);
+      const FT k0 = internal::point_dot(nj, internal::point_difference(fr.q[0], fr.q[j]));
+      const FT &gm = alo[4 + j], &gp = ahi[4 + j];
       const auto bound_from = [&](const FT& gval) {  // t = (gval - k0 - alpha a - beta b) / kappa
         return internal::Affine_2<FT>{Tr::quotient(FT(gval - k0), kappa), Tr::quotient(FT(-alpha), kappa),
                                       Tr::quotient(FT(-beta), kappa)};
@@ -528,33 +387,33 @@ class Loop_error_bounds {
       const auto negate = [](internal::Affine_2<FT> a) {
         return internal::Affine_2<FT>{FT(-a.tau), FT(-a.rho), FT(-a.sigma)};
       };
-      if (certainly_positive(kappa)) {
+      const Certified_sign ks = certified_sign(kappa);
+      if (ks == Certified_sign::positive) {
         upper.push_back(bound_from(gp));
         lower.push_back(negate(bound_from(gm)));
-      } else if (certainly_negative(kappa)) {
+      } else if (ks == Certified_sign::negative) {
         upper.push_back(bound_from(gm));
         lower.push_back(negate(bound_from(gp)));
       }
     }
     const FT amin = alo[1], bmin = alo[2], s = FT(FT(1) - alo[3]);
-    const double tol = 1e-9 * (1 + std::abs(internal::coordinate_to_double(s)));
+    const double tol = 1e-9 * (1 + std::abs(nearest_double(s)));
     FT tu = U, tl = FT(-L);
     if (!internal::tent_maximum<FT, Tr>(upper, amin, bmin, s, tol, tu)) tu = U;
     if (!internal::tent_maximum<FT, Tr>(lower, amin, bmin, s, tol, tl)) tl = FT(-L);
-    r.tangent_plane[g] = make_bound(internal::max_of(L, FT(-tl)), internal::min_of(U, tu), length);
-    if (bounds_.thesis_estimate) r.thesis_estimate[g] = thesis(q0, q1, q2, nj, L, U, len);
+    return make_bound(internal::max_of(L, FT(-tl)), internal::min_of(U, tu), fr.length);
   }
 
-  // Distances t |n| in double, widened by 2^-50 relative (|n| and the
-  // product are rounded).
-  // Universal ranges of the 12 box-spline functions over the triangle,
-  // computed once per number type and depth (4^depth Bezier nets).
+  // p / q in FT, in the default floating-point environment (as compute()).
+  static FT fraction(long p, long q) {
+    const Default_fp_environment environment;
+    return Tr::rational(p, q);
+  }
+
+  // Universal ranges of the 12 box-spline functions over the triangle
+  // (4^depth Bezier nets), computed once per object by the constructor.
   static std::array<std::pair<FT, FT>, 12> universal_ranges(unsigned depth, const FT& one_24, const FT& one_16) {
-    static std::mutex mutex;
-    static std::map<unsigned, std::array<std::pair<FT, FT>, 12>> cache;
-    const std::lock_guard<std::mutex> lock(mutex);
-    const auto it = cache.find(depth);
-    if (it != cache.end()) return it->second;
+    const Default_fp_environment environment;  // rounded outward in hardware, whatever the caller set
     std::vector<FT> identity(144, FT(0));
     for (int i = 0; i < 12; ++i) identity[i * 12 + i] = FT(1);
     std::vector<FT> lo(12), hi(12);
@@ -562,67 +421,54 @@ class Loop_error_bounds {
     internal::regular_net_ranges(identity, 12, depth, one_24, one_16, lo, hi, have);
     std::array<std::pair<FT, FT>, 12> r;
     for (int i = 0; i < 12; ++i) r[i] = {lo[i], hi[i]};
-    return cache.emplace(depth, r).first->second;
+    return r;
   }
 
   // Lower and upper bound of |n| = sqrt(n . n), rounded outward (sqrt is
   // correctly rounded, so one step out bounds it): from the ends of n . n,
   // not from an approximation of it, so an interval n . n as wide as its
   // value (a thin face) still gives bounds.
-  struct Length_bounds {
-    double lo, hi;
-  };
-  static Length_bounds length_bounds(const FT& nn) {
-    const double lo = internal::lower_double(nn), hi = internal::upper_double(nn);
-    return {lo > 0 ? std::nextafter(std::sqrt(lo), 0.0) : 0.0, std::nextafter(std::sqrt(hi), INFINITY)};
-  }
+  static Length_bounds length_bounds(const FT& nn) { return {sqrt_down(lower_double(nn)), sqrt_up(upper_double(nn))}; }
 
   // The heights [lo, hi] as signed distances t |n|, rounded outward (a
   // product rounded to nearest is within half an ulp, so one step out bounds
   // it; for a negative height the larger length gives the lower distance).
   static Loop_face_bound<FT> make_bound(const FT& lo, const FT& hi, const Length_bounds& len) {
     Loop_face_bound<FT> b{lo, hi, 0, 0};
-    const double l = internal::lower_double(lo), u = internal::upper_double(hi);
-    b.lower_distance = std::nextafter(l * (l >= 0 ? len.lo : len.hi), -INFINITY);
-    b.upper_distance = std::nextafter(u * (u >= 0 ? len.hi : len.lo), INFINITY);
+    const double l = lower_double(lo), u = upper_double(hi);
+    b.lower_distance = next_down(l * (l >= 0 ? len.lo : len.hi));
+    b.upper_distance = next_up(u * (u >= 0 ? len.hi : len.lo));
     return b;
   }
 
   // The thesis' construction in double (eqs. 5.11-5.14 as printed): common
   // angle phi = min theta_j, planes through q_j tilted away from the centre,
   // cut by the basis-range slab; reflected below.
-  static std::pair<double, double> thesis(const P3& q0f, const P3& q1f, const P3& q2f, const std::array<P3, 3>& njf,
-                                          const FT& L, const FT& U, double len) {
-    using D3 = std::array<double, 3>;
-    const auto d3 = [](const P3& a) -> D3 {
-      return {internal::coordinate_to_double(a.x), internal::coordinate_to_double(a.y), internal::coordinate_to_double(a.z)};
+  static std::pair<double, double> thesis(const Face_frame& fr, const FT& L, const FT& U, double len) {
+    using D3 = Point_3<double>;
+    using internal::point_cross, internal::point_difference, internal::point_dot;
+    const auto d3 = [](const P3& a) { return D3{nearest_double(a.x), nearest_double(a.y), nearest_double(a.z)}; };
+    const auto unit = [](const D3& a) {
+      const double l = std::sqrt(point_dot(a, a));
+      return l > 0 ? D3{a.x / l, a.y / l, a.z / l} : a;
     };
-    const auto sub = [](D3 a, D3 b) -> D3 { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
-    const auto dt = [](D3 a, D3 b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-    const auto cr = [](D3 a, D3 b) -> D3 {
-      return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    };
-    const auto unit = [&](D3 a) -> D3 {
-      const double l = std::sqrt(dt(a, a));
-      return l > 0 ? D3{a[0] / l, a[1] / l, a[2] / l} : a;
-    };
-    const D3 qs[3] = {d3(q0f), d3(q1f), d3(q2f)};
-    const D3 E1 = sub(qs[1], qs[0]), E2 = sub(qs[2], qs[0]);
-    const D3 nh = unit(cr(E1, E2));
+    const D3 qs[3] = {d3(fr.q[0]), d3(fr.q[1]), d3(fr.q[2])};
+    const D3 E1 = point_difference(qs[1], qs[0]), E2 = point_difference(qs[2], qs[0]);
+    const D3 nh = unit(point_cross(E1, E2));
     double phi = 1;
-    for (const P3& v : njf) phi = std::min(phi, dt(nh, unit(d3(v))));
+    for (const P3& v : fr.nj) phi = std::min(phi, point_dot(nh, unit(d3(v))));
     phi = std::clamp(phi, -1.0, 1.0);
     const double tan_a = std::sqrt(std::max(0.0, 1 - phi * phi)) / std::max(phi, 1e-300);
-    const D3 c = {(qs[0][0] + qs[1][0] + qs[2][0]) / 3, (qs[0][1] + qs[1][1] + qs[2][1]) / 3,
-                  (qs[0][2] + qs[1][2] + qs[2][2]) / 3};
-    const double Ud = internal::upper_double(U) * len, Ld = internal::lower_double(L) * len;
+    const D3 c = {(qs[0].x + qs[1].x + qs[2].x) / 3, (qs[0].y + qs[1].y + qs[2].y) / 3, (qs[0].z + qs[1].z + qs[2].z) / 3};
+    const double Ud = upper_double(U) * len, Ld = lower_double(L) * len;
     std::vector<internal::Affine_2<double>> up{{Ud, 0, 0}}, dn{{-Ld, 0, 0}};
     for (int j = 0; j < 3; ++j) {
-      D3 d = sub(c, qs[j]);
-      const double along = dt(d, nh);
-      d = unit(D3{d[0] - along * nh[0], d[1] - along * nh[1], d[2] - along * nh[2]});
+      D3 d = point_difference(c, qs[j]);
+      const double along = point_dot(d, nh);
+      d = unit(D3{d.x - along * nh.x, d.y - along * nh.y, d.z - along * nh.z});
       // height (distance) of plane j over q0 + a E1 + b E2: tan_a d . (x - q_j)
-      const internal::Affine_2<double> h{tan_a * dt(d, sub(qs[0], qs[j])), tan_a * dt(d, E1), tan_a * dt(d, E2)};
+      const internal::Affine_2<double> h{tan_a * point_dot(d, point_difference(qs[0], qs[j])), tan_a * point_dot(d, E1),
+                                         tan_a * point_dot(d, E2)};
       up.push_back(h);
       dn.push_back(h);  // reflected: -t <= h
     }
@@ -634,7 +480,6 @@ class Loop_error_bounds {
 
   Loop_options options_;
   Loop_bound_options bounds_;
-  K kernel_;
   FT one_24_, one_16_;
   std::array<std::pair<FT, FT>, 12> universal_;
 };

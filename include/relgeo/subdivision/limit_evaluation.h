@@ -37,7 +37,6 @@
 #pragma once
 
 #include <gmpxx.h>
-#include <mpfr.h>
 
 #include <algorithm>
 #include <array>
@@ -49,36 +48,25 @@
 #include <utility>
 #include <vector>
 
-#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/errors.h"
-#include "relgeo/core/interval.h"
-#include "relgeo/core/mpfr_number.h"
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/mesh/internal/point_access.h"
-#include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/box_spline.h"
+#include "relgeo/subdivision/internal/exact_limit.h"
+#include "relgeo/subdivision/internal/local_patch.h"
+#include "relgeo/subdivision/internal/loop_rules.h"
+#include "relgeo/subdivision/internal/patch_classification.h"
+#include "relgeo/subdivision/internal/point_algebra.h"
+#include "relgeo/subdivision/internal/surface_parameters.h"
+#include "relgeo/subdivision/loop_features.h"
 #include "relgeo/subdivision/loop_masks.h"
+#include "relgeo/subdivision/loop_patch_kind.h"
 #include "relgeo/subdivision/loop_subdivision.h"
 #include "relgeo/subdivision/loop_weights.h"
 
 namespace relgeo {
-
-/// How the limit surface over a face is evaluated.
-enum class Loop_patch_kind : std::uint8_t {
-  regular,         ///< box spline of 12 control points (all smooth valence 6, standard rules)
-  regular_crease,  ///< box spline of the net extended across regular creases by ghost points
-  irregular        ///< local subdivision until the sub-patch holding (u, v) is regular
-};
-
-inline const char* to_string(Loop_patch_kind k) {
-  switch (k) {
-    case Loop_patch_kind::regular: return "regular";
-    case Loop_patch_kind::regular_crease: return "regular_crease";
-    case Loop_patch_kind::irregular: return "irregular";
-  }
-  return "unknown";
-}
 
 /// A surface parameter that names no point of the surface: a face index out
 /// of range, or (u, v) outside the closed triangle u, v >= 0, u + v <= 1.
@@ -106,585 +94,6 @@ struct Loop_limit_jet {
   /// Local subdivision levels used (0: evaluated on the face's own patch).
   unsigned levels = 0;
 };
-
-namespace internal {
-
-/// The per-half-edge and per-vertex data the rules read, for a control mesh
-/// or a local patch: vertex kinds; whether each half-edge's edge is a crease
-/// (tagged or boundary); for the vertex at corner h % 3 of face h / 3 (the
-/// source of h), when it is a crease vertex or corner, the number of faces of
-/// its sector holding that face (0 otherwise).
-struct Loop_rule_data {
-  std::vector<Vertex_kind> kind;
-  std::vector<std::uint8_t> crease;
-  std::vector<Index> sector;
-  bool special(Index v) const { return kind[v] == Vertex_kind::crease || kind[v] == Vertex_kind::corner; }
-  friend bool operator==(const Loop_rule_data&, const Loop_rule_data&) = default;
-};
-
-inline Loop_rule_data loop_rule_data(const Mesh_topology& t, const Loop_features& f) {
-  Loop_rule_data d;
-  d.kind = f.vertex_kind;
-  const std::size_t nh = t.number_of_halfedges();
-  d.crease.resize(nh);
-  for (Index h = 0; h < nh; ++h) d.crease[h] = f.edge_is_crease[t.edge(h)];
-  d.sector.assign(nh, 0);
-  for (Index v = 0; v < t.number_of_vertices(); ++v) {
-    if (!f.is_special(v)) continue;
-    t.for_each_outgoing(v, [&](Index h) {
-      if (d.sector[h] != 0) return;
-      const Loop_sector s = loop_sector(t, f, v, h);
-      Index g = s.first;
-      for (Index i = 0; i < s.faces() && g != invalid_index; ++i, g = t.ccw_outgoing(g)) d.sector[g] = s.faces();
-    });
-  }
-  return d;
-}
-
-/// A control point of a regular patch: vertex a, or the ghost a + b - c.
-struct Patch_slot {
-  Index a = invalid_index, b = invalid_index, c = invalid_index;
-  bool is_ghost() const { return b != invalid_index; }
-  friend bool operator==(const Patch_slot&, const Patch_slot&) = default;
-};
-
-/// BLZ's weight at a special vertex of a smooth edge is the standard 3/8
-/// exactly when its sector has 3 faces (crease vertex) or alpha / k = pi / 3
-/// (corner).
-inline bool blz_weight_is_standard(const Loop_options& o, Vertex_kind kind, Index k) {
-  if (kind == Vertex_kind::crease) return k == 3;
-  return 3 * o.corner_angle_num == o.corner_angle_den * static_cast<long>(k);
-}
-
-/// Whether the corner `corner` of face f is a regular vertex of the patch:
-/// smooth of valence 6 whose edges all follow the standard rule, or a crease
-/// vertex with 3 faces in the sector holding f.
-inline bool patch_corner_is_regular(const Mesh_topology& t, const Loop_rule_data& d, const Loop_options& o,
-                                    Index f, int corner) {
-  const Index h = 3 * f + Index(corner), a = t.source(h);
-  switch (d.kind[a]) {
-    case Vertex_kind::smooth: {
-      if (t.is_boundary_vertex(a) || t.number_of_incident_faces(a) != 6) return false;
-      if (o.crease_rules != Loop_crease_rules::biermann_levin_zorin) return true;
-      bool ok = true;
-      t.for_each_outgoing(a, [&](Index g) {
-        const Index x = t.target(g);
-        if (d.special(x) && !blz_weight_is_standard(o, d.kind[x], d.sector[3 * (g / 3) + (g % 3 + 1) % 3])) ok = false;
-      });
-      return ok;
-    }
-    case Vertex_kind::crease: return d.sector[h] == 3;
-    default: return false;
-  }
-}
-
-/// Classifies face f and, for regular ones, fills its 12 control slots
-/// (box_spline.h order). A crease vertex's sector p_0..p_3 (3 faces) is
-/// completed by the ghosts a + p_3 - p_2 and a + p_0 - p_1; a conflict
-/// between the slots found from different corners (only in degenerate tiny
-/// meshes) makes the patch irregular.
-inline Loop_patch_kind classify_loop_patch(const Mesh_topology& t, const Loop_rule_data& d, const Loop_options& o,
-                                           Index f, std::array<Patch_slot, 12>* slots) {
-  for (int k = 0; k < 3; ++k)
-    if (!patch_corner_is_regular(t, d, o, f, k)) return Loop_patch_kind::irregular;
-  static constexpr int dirs[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
-  static constexpr int start[3] = {0, 2, 4};
-  std::array<Patch_slot, 12> s{};
-  std::array<bool, 12> set{};
-  bool any_crease = false;
-  for (int k = 0; k < 3; ++k) {
-    const Index h = 3 * f + Index(k), a = t.source(h);
-    std::array<Patch_slot, 6> cycle;
-    if (d.kind[a] == Vertex_kind::smooth) {
-      Index g = h;
-      for (int m = 0; m < 6; ++m, g = t.ccw_outgoing(g)) cycle[m] = Patch_slot{t.target(g)};
-    } else {  // crease vertex, 3 faces in this sector
-      any_crease = true;
-      Index first = h;  // clockwise to the crease half-edge starting the sector
-      for (int guard = 0; guard < 3 && !d.crease[first]; ++guard) first = Mesh_topology::next(t.opposite(first));
-      if (!d.crease[first]) return Loop_patch_kind::irregular;
-      std::array<Index, 4> p{};
-      int pos = -1;
-      Index g = first;
-      for (int i = 0; i < 3; ++i) {
-        if (g == invalid_index) return Loop_patch_kind::irregular;
-        if (g == h) pos = i;
-        p[i] = t.target(g);
-        if (i == 2) p[3] = t.source(Mesh_topology::prev(g));
-        g = t.ccw_outgoing(g);
-      }
-      if (pos < 0) return Loop_patch_kind::irregular;
-      // ghosts with (a, b) sorted: the same ghost is found from both crease ends
-      const auto ghost = [](Index x, Index y, Index z) { return Patch_slot{std::min(x, y), std::max(x, y), z}; };
-      const std::array<Patch_slot, 6> sector{{{p[0]}, {p[1]}, {p[2]}, {p[3]}, ghost(a, p[3], p[2]), ghost(a, p[0], p[1])}};
-      for (int m = 0; m < 6; ++m) cycle[m] = sector[(pos + m) % 6];
-    }
-    const int cx = k == 1 ? 1 : 0, cy = k == 2 ? 1 : 0;
-    const auto put = [&](int x, int y, const Patch_slot& ps) {
-      for (int i = 0; i < 12; ++i)
-        if (loop_patch_lattice[i][0] == x && loop_patch_lattice[i][1] == y) {
-          if (set[i] && !(s[i] == ps)) return false;
-          s[i] = ps, set[i] = true;
-          return true;
-        }
-      return false;  // unreachable: every neighbour of a corner is a slot
-    };
-    if (!put(cx, cy, Patch_slot{a})) return Loop_patch_kind::irregular;
-    for (int m = 0; m < 6; ++m) {
-      const int* dxy = dirs[(start[k] + m) % 6];
-      if (!put(cx + dxy[0], cy + dxy[1], cycle[m])) return Loop_patch_kind::irregular;
-    }
-  }
-  if (slots) *slots = s;
-  return any_crease ? Loop_patch_kind::regular_crease : Loop_patch_kind::regular;
-}
-
-/// A weighted vertex of a stencil.
-template <class FT>
-using Weighted = std::pair<Index, FT>;
-
-/// Refinement stencil of vertex a (its fan must be complete in t).
-template <class K>
-void vertex_rule(const Mesh_topology& t, const Loop_rule_data& d, const Loop_weights<K>& w, Index a,
-                 std::vector<Weighted<typename K::FT>>& out) {
-  using FT = typename K::FT;
-  out.clear();
-  switch (d.kind[a]) {
-    case Vertex_kind::smooth:
-    case Vertex_kind::dart: {
-      const Index n = t.number_of_incident_faces(a);
-      out.emplace_back(a, w.centre(n));
-      t.for_each_outgoing(a, [&](Index h) { out.emplace_back(t.target(h), w.beta(n)); });
-      break;
-    }
-    case Vertex_kind::crease: {
-      out.emplace_back(a, w.three_quarters());
-      Index last = invalid_index;
-      t.for_each_outgoing(a, [&](Index h) {
-        if (d.crease[h]) out.emplace_back(t.target(h), w.eighth());
-        last = h;
-      });
-      if (t.is_boundary_vertex(a)) out.emplace_back(t.source(Mesh_topology::prev(last)), w.eighth());
-      break;
-    }
-    default: out.emplace_back(a, FT(w.one()));
-  }
-}
-
-/// Refinement stencil of the edge of half-edge h (both faces in t unless a crease).
-template <class K>
-void edge_rule(const Mesh_topology& t, const Loop_rule_data& d, const Loop_weights<K>& w, Index h,
-               std::vector<Weighted<typename K::FT>>& out) {
-  using FT = typename K::FT;
-  out.clear();
-  const Index a = t.source(h), b = t.target(h);
-  if (d.crease[h]) {
-    out.emplace_back(a, w.half()), out.emplace_back(b, w.half());
-    return;
-  }
-  const Index o = t.opposite(h);
-  if (o == invalid_index) throw Error(Error_code::computation_failure, "Loop local patch: missing face");
-  FT wa = w.three_eighths(), wb = w.three_eighths();
-  if (w.options().crease_rules == Loop_crease_rules::biermann_levin_zorin && d.special(a) != d.special(b)) {
-    const Index v = d.special(a) ? a : b;
-    const Index hv = v == a ? h : o;
-    const FT g = w.gamma(d.sector[hv], d.kind[v] == Vertex_kind::corner);
-    (v == a ? wa : wb) = FT(w.three_quarters() - g);
-    (v == a ? wb : wa) = g;
-  }
-  out.emplace_back(a, wa), out.emplace_back(b, wb);
-  out.emplace_back(t.target(Mesh_topology::next(h)), w.eighth());
-  out.emplace_back(t.target(Mesh_topology::next(o)), w.eighth());
-}
-
-/// A piece of a Loop mesh around one face: the face (faces[0], in its
-/// parameter order) and every face incident to its vertices, with the rule
-/// data carried from the whole mesh (never recomputed from the piece, whose
-/// outer edges are not boundaries) and `dim` values per vertex. The fans of
-/// the three vertices of faces[0] are complete, which is all the rules for
-/// its children need.
-template <class FT>
-struct Loop_local_patch {
-  std::vector<Triangle> faces;
-  Loop_rule_data rules;
-  std::size_t dim = 3;
-  std::vector<FT> values;
-  Index number_of_vertices() const { return static_cast<Index>(rules.kind.size()); }
-  const FT* value(Index v) const { return values.data() + std::size_t(v) * dim; }
-};
-
-/// The local patch of face f of a mesh (topology t, rule data d); values(v,
-/// out) writes the dim values of mesh vertex v. global_ids receives the mesh
-/// index of each local vertex.
-template <class FT, class Values>
-Loop_local_patch<FT> extract_local_patch(const Mesh_topology& t, const Loop_rule_data& d, Index f, std::size_t dim,
-                                         Values&& values, std::vector<Index>* global_ids = nullptr) {
-  Loop_local_patch<FT> P;
-  P.dim = dim;
-  std::vector<Index> gfaces{f};
-  for (int k = 0; k < 3; ++k)
-    t.for_each_outgoing(t.faces()[f][k], [&](Index h) {
-      const Index g = Mesh_topology::face(h);
-      if (std::find(gfaces.begin(), gfaces.end(), g) == gfaces.end()) gfaces.push_back(g);
-    });
-  std::vector<Index> ids;
-  const auto local = [&](Index v) {
-    const auto it = std::find(ids.begin(), ids.end(), v);
-    if (it != ids.end()) return static_cast<Index>(it - ids.begin());
-    ids.push_back(v);
-    return static_cast<Index>(ids.size() - 1);
-  };
-  for (Index g : gfaces) {
-    const Triangle& tr = t.faces()[g];
-    P.faces.push_back({local(tr[0]), local(tr[1]), local(tr[2])});
-    for (int i = 0; i < 3; ++i) {
-      P.rules.crease.push_back(d.crease[3 * g + i]);
-      P.rules.sector.push_back(d.sector[3 * g + i]);
-    }
-  }
-  P.values.resize(ids.size() * dim);
-  for (std::size_t i = 0; i < ids.size(); ++i) {
-    P.rules.kind.push_back(d.kind[ids[i]]);
-    values(ids[i], P.values.data() + i * dim);
-  }
-  if (global_ids) *global_ids = std::move(ids);
-  return P;
-}
-
-/// Topology of a local patch (outer vertices may be non-manifold: ignored,
-/// the rules only walk around the vertices of faces[0]).
-template <class FT>
-Mesh_topology local_topology(const Loop_local_patch<FT>& P) {
-  std::vector<Mesh_issue> ignored;
-  return Mesh_topology::build_checked(P.number_of_vertices(), P.faces, ignored);
-}
-
-/// One refinement step of a local patch: the children `which` (a bitmask of
-/// 1 << c, c as in box_spline.h) of faces[0] as local patches. Only the
-/// vertex points of faces[0]'s vertices and the edge points of their edges
-/// are computed; they are exactly the vertices of the children's patches.
-template <class K>
-std::array<Loop_local_patch<typename K::FT>, 4> refine_local_patch(
-    const Loop_local_patch<typename K::FT>& P, const Mesh_topology& t, const Loop_weights<K>& w, unsigned which,
-    std::vector<std::vector<Weighted<typename K::FT>>>* stencils = nullptr) {
-  using FT = typename K::FT;
-  const Index nv = P.number_of_vertices(), ne = static_cast<Index>(t.number_of_edges());
-  const Index nf = static_cast<Index>(P.faces.size());
-  const std::size_t dim = P.dim;
-  std::vector<FT> cv((std::size_t(nv) + ne) * dim);
-  std::vector<std::uint8_t> done(std::size_t(nv) + ne, 0);
-  std::vector<Weighted<FT>> st;
-  std::vector<std::vector<Weighted<FT>>> used;  // per child vertex, when `stencils` is wanted
-  if (stencils) used.resize(std::size_t(nv) + ne);
-  const auto apply = [&](Index target) {
-    if (stencils) used[target] = st;
-    FT* out = cv.data() + std::size_t(target) * dim;
-    for (std::size_t c = 0; c < dim; ++c) out[c] = FT(0);
-    for (const auto& [v, wt] : st) {
-      const FT* in = P.value(v);
-      for (std::size_t c = 0; c < dim; ++c) out[c] = FT(out[c] + FT(wt * in[c]));
-    }
-    done[target] = 1;
-  };
-  const auto do_edge = [&](Index h) {
-    const Index e = t.edge(h);
-    if (done[nv + e]) return;
-    edge_rule(t, P.rules, w, h, st);
-    apply(nv + e);
-  };
-  for (int k = 0; k < 3; ++k) {
-    const Index a = P.faces[0][k];
-    if (!done[a]) {
-      vertex_rule(t, P.rules, w, a, st);
-      apply(a);
-    }
-    Index last = invalid_index;
-    t.for_each_outgoing(a, [&](Index h) {
-      do_edge(h);
-      last = h;
-    });
-    if (t.is_boundary_vertex(a)) do_edge(Mesh_topology::prev(last));
-  }
-  // Children of every face, with their rule data.
-  const Index cnv = nv + ne;
-  std::vector<Triangle> cf(4 * std::size_t(nf));
-  std::vector<std::uint8_t> ccrease(12 * std::size_t(nf), 0);
-  std::vector<Index> csector(12 * std::size_t(nf), 0);
-  std::vector<Vertex_kind> ckind(cnv);
-  for (Index v = 0; v < nv; ++v) ckind[v] = P.rules.kind[v];
-  for (Index e = 0; e < ne; ++e)
-    ckind[nv + e] = P.rules.crease[t.edge_halfedge(e)] ? Vertex_kind::crease : Vertex_kind::smooth;
-  for (Index lf = 0; lf < nf; ++lf) {
-    const Triangle& tr = P.faces[lf];
-    Index m[3];
-    bool cr[3];
-    for (int i = 0; i < 3; ++i) m[i] = nv + t.edge(3 * lf + i), cr[i] = P.rules.crease[3 * lf + i] != 0;
-    for (int k = 0; k < 3; ++k) {
-      const int km = (k + 2) % 3;
-      const Index c = 4 * lf + k;
-      cf[c] = {tr[k], m[k], m[km]};
-      ccrease[3 * c] = cr[k], ccrease[3 * c + 2] = cr[km];
-      csector[3 * c] = P.rules.sector[3 * lf + k];
-      csector[3 * c + 1] = cr[k] ? 3 : 0;
-      csector[3 * c + 2] = cr[km] ? 3 : 0;
-    }
-    const Index c = 4 * lf + 3;
-    cf[c] = {m[0], m[1], m[2]};
-    for (int i = 0; i < 3; ++i) csector[3 * c + i] = cr[i] ? 3 : 0;
-  }
-  std::array<Loop_local_patch<FT>, 4> out;
-  std::vector<Index> map(cnv);
-  for (int ci = 0; ci < 4; ++ci) {
-    if (!(which & (1u << ci))) continue;
-    Loop_local_patch<FT>& Q = out[ci];
-    Q.dim = dim;
-    const Triangle C = cf[ci];  // child ci of faces[0] (local face 0)
-    std::fill(map.begin(), map.end(), invalid_index);
-    std::vector<Index> ids;
-    const auto local = [&](Index v) {
-      if (map[v] == invalid_index) {
-        if (!done[v])
-          throw Error(Error_code::computation_failure, "Loop local patch: a child vertex was not computed");
-        map[v] = static_cast<Index>(ids.size());
-        ids.push_back(v);
-      }
-      return map[v];
-    };
-    const auto take = [&](Index g) {
-      const Triangle& tr = cf[g];
-      Q.faces.push_back({local(tr[0]), local(tr[1]), local(tr[2])});
-      for (int i = 0; i < 3; ++i) Q.rules.crease.push_back(ccrease[3 * g + i]), Q.rules.sector.push_back(csector[3 * g + i]);
-    };
-    take(Index(ci));
-    for (Index g = 0; g < cf.size(); ++g) {
-      if (g == Index(ci)) continue;
-      const Triangle& tr = cf[g];
-      bool touches = false;
-      for (Index v : tr) touches |= v == C[0] || v == C[1] || v == C[2];
-      if (touches) take(g);
-    }
-    Q.values.resize(ids.size() * dim);
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-      Q.rules.kind.push_back(ckind[ids[i]]);
-      std::copy_n(cv.data() + std::size_t(ids[i]) * dim, dim, Q.values.data() + i * dim);
-    }
-    if (stencils) {  // the stencils of the (single) requested child's vertices
-      stencils->clear();
-      for (Index v : ids) stencils->push_back(used[v]);
-    }
-  }
-  return out;
-}
-
-/// Whether the limit mask of loop_masks.h is an exact eigenvector at vertex
-/// a: crease vertices and corners always; smooth vertices whose edges all
-/// follow the standard rule (no darts; under BLZ no special neighbour with a
-/// non-standard gamma).
-inline bool limit_mask_is_exact(const Mesh_topology& t, const Loop_rule_data& d, const Loop_options& o, Index a) {
-  switch (d.kind[a]) {
-    case Vertex_kind::crease:
-    case Vertex_kind::corner:
-    case Vertex_kind::isolated: return true;
-    case Vertex_kind::dart: return false;
-    case Vertex_kind::smooth: {
-      if (o.crease_rules != Loop_crease_rules::biermann_levin_zorin) return true;
-      bool ok = true;
-      t.for_each_outgoing(a, [&](Index g) {
-        const Index x = t.target(g);
-        if (d.special(x) && !blz_weight_is_standard(o, d.kind[x], d.sector[3 * (g / 3) + (g % 3 + 1) % 3])) ok = false;
-      });
-      return ok;
-    }
-  }
-  return false;
-}
-
-/// |x| as a double, for pivot choice.
-template <class FT>
-double magnitude(const FT& x) {
-  if constexpr (requires { x.inf(); x.sup(); }) return std::max(std::abs(x.inf()), std::abs(x.sup()));
-  else return std::abs(coordinate_to_double(x));
-}
-/// Whether x is certainly nonzero.
-template <class FT>
-bool certainly_nonzero(const FT& x) {
-  if constexpr (requires { x.inf(); x.sup(); }) return x.inf() > 0 || x.sup() < 0;
-  else return !(x == FT(0));
-}
-
-/// Solves the m x m system A x = b (row-major) by Gaussian elimination with
-/// partial pivoting, divisions through Loop_number_traits<FT>::quotient.
-/// \throws Error (computation_failure) when a pivot is not certainly nonzero.
-template <class FT>
-std::vector<FT> solve_small_system(std::vector<FT> A, std::vector<FT> b) {
-  using Tr = Loop_number_traits<FT>;
-  const std::size_t m = b.size();
-  for (std::size_t c = 0; c < m; ++c) {
-    std::size_t piv = c;
-    for (std::size_t r = c + 1; r < m; ++r)
-      if (magnitude(A[r * m + c]) > magnitude(A[piv * m + c])) piv = r;
-    if (!certainly_nonzero(A[piv * m + c]))
-      throw Error(Error_code::computation_failure, "limit position: singular eigen-system");
-    if (piv != c) {
-      for (std::size_t k = 0; k < m; ++k) std::swap(A[c * m + k], A[piv * m + k]);
-      std::swap(b[c], b[piv]);
-    }
-    for (std::size_t r = c + 1; r < m; ++r) {
-      if (!certainly_nonzero(A[r * m + c])) {
-        if constexpr (!requires { A[0].inf(); }) continue;
-      }
-      const FT f = Tr::quotient(A[r * m + c], A[c * m + c]);
-      for (std::size_t k = c; k < m; ++k) A[r * m + k] = FT(A[r * m + k] - FT(f * A[c * m + k]));
-      b[r] = FT(b[r] - FT(f * b[c]));
-    }
-  }
-  std::vector<FT> x(m);
-  for (std::size_t r = m; r-- > 0;) {
-    FT s = b[r];
-    for (std::size_t k = r + 1; k < m; ++k) s = FT(s - FT(A[r * m + k] * x[k]));
-    x[r] = Tr::quotient(s, A[r * m + r]);
-  }
-  return x;
-}
-
-/// The exact limit position (dim values) of vertex a of a local patch or mesh
-/// whose fan is complete in t.
-///
-/// Crease vertices, corners: the limit masks (exact). Smooth vertices and
-/// darts: from level 1 on, the 1-ring subdivision matrix S_inf of a is
-/// stationary (its neighbours are new vertices, special only across crease
-/// edges, so no BLZ weight applies any more); the limit is l S_0 P with S_0
-/// the actual first step (BLZ weights included) and l the left eigenvector of
-/// S_inf for eigenvalue 1 (l S_inf = l, sum l = 1): the standard limit mask
-/// for smooth vertices (chi, 1 - n chi), solved in FT for darts (whose crease
-/// edge keeps the rule 1/2, 1/2). Where S_0 = S_inf and a is not a dart this
-/// is exactly the limit mask (limit_mask_is_exact).
-template <class K>
-std::vector<typename K::FT> exact_limit_values(const Mesh_topology& t, const Loop_rule_data& d,
-                                               const Loop_weights<K>& w, Index a, std::size_t dim,
-                                               const typename K::FT* values) {
-  using FT = typename K::FT;
-  std::vector<FT> out(dim, FT(0));
-  const auto add = [&](Index v, const FT& wt) {
-    for (std::size_t c = 0; c < dim; ++c) out[c] = FT(out[c] + FT(wt * values[std::size_t(v) * dim + c]));
-  };
-  const Loop_options& o = w.options();
-  // Ring in counter-clockwise order, with the half-edges a -> ring[i].
-  std::vector<Index> ring, he;
-  Index last = invalid_index;
-  t.for_each_outgoing(a, [&](Index h) {
-    ring.push_back(t.target(h)), he.push_back(h);
-    last = h;
-  });
-  const bool boundary = t.is_boundary_vertex(a);
-  if (boundary) ring.push_back(t.source(Mesh_topology::prev(last))), he.push_back(Mesh_topology::prev(last));
-  const std::size_t n = ring.size();
-  const auto crease_at = [&](std::size_t i) { return d.crease[he[i]] != 0; };
-  switch (d.kind[a]) {
-    case Vertex_kind::crease:
-      add(a, w.two_thirds());
-      for (std::size_t i = 0; i < n; ++i)
-        if (crease_at(i)) add(ring[i], w.sixth());
-      return out;
-    case Vertex_kind::smooth:
-    case Vertex_kind::dart: break;
-    default: add(a, w.one()); return out;
-  }
-  // 1-ring matrices on slots 0 = a, i + 1 = ring[i] (a is interior here).
-  const std::size_t m = n + 1;
-  const auto ring_matrix = [&](bool first_step) {
-    std::vector<FT> S(m * m, FT(0));
-    S[0] = w.centre(n);
-    for (std::size_t i = 0; i < n; ++i) S[i + 1] = FT(S[i + 1] + w.beta(n));
-    for (std::size_t i = 0; i < n; ++i) {
-      FT* row = S.data() + (i + 1) * m;
-      if (crease_at(i)) {
-        row[0] = FT(row[0] + w.half()), row[i + 1] = FT(row[i + 1] + w.half());
-        continue;
-      }
-      FT wa = w.three_eighths(), wb = w.three_eighths();
-      const Index x = ring[i];
-      if (first_step && o.crease_rules == Loop_crease_rules::biermann_levin_zorin && d.special(x)) {
-        const FT g = w.gamma(d.sector[t.opposite(he[i])], d.kind[x] == Vertex_kind::corner);
-        wb = FT(w.three_quarters() - g), wa = g;
-      }
-      row[0] = FT(row[0] + wa), row[i + 1] = FT(row[i + 1] + wb);
-      const std::size_t ip = (i + n - 1) % n, in = (i + 1) % n;
-      row[ip + 1] = FT(row[ip + 1] + w.eighth()), row[in + 1] = FT(row[in + 1] + w.eighth());
-    }
-    return S;
-  };
-  std::vector<FT> l(m);
-  if (d.kind[a] == Vertex_kind::smooth) {
-    l[0] = w.limit_centre(n);
-    for (std::size_t i = 0; i < n; ++i) l[i + 1] = w.chi(n);
-  } else {  // dart: (S_inf^T - I) l = 0 with the first equation replaced by sum l = 1
-    const std::vector<FT> S = ring_matrix(false);
-    std::vector<FT> A(m * m), rhs(m, FT(0));
-    for (std::size_t j = 0; j < m; ++j)
-      for (std::size_t i = 0; i < m; ++i) A[j * m + i] = i == j ? FT(S[i * m + j] - w.one()) : S[i * m + j];
-    for (std::size_t i = 0; i < m; ++i) A[i] = w.one();
-    rhs[0] = w.one();
-    l = solve_small_system(std::move(A), std::move(rhs));
-  }
-  if (!limit_mask_is_exact(t, d, o, a) && d.kind[a] == Vertex_kind::smooth) {
-    // BLZ first step: l <- l S_0
-    const std::vector<FT> S0 = ring_matrix(true);
-    std::vector<FT> ls(m, FT(0));
-    for (std::size_t i = 0; i < m; ++i)
-      for (std::size_t j = 0; j < m; ++j) ls[j] = FT(ls[j] + FT(l[i] * S0[i * m + j]));
-    l = std::move(ls);
-  } else if (d.kind[a] == Vertex_kind::dart && o.crease_rules == Loop_crease_rules::biermann_levin_zorin) {
-    bool modified = false;
-    for (std::size_t i = 0; i < n; ++i) modified |= !crease_at(i) && d.special(ring[i]);
-    if (modified) {
-      const std::vector<FT> S0 = ring_matrix(true);
-      std::vector<FT> ls(m, FT(0));
-      for (std::size_t i = 0; i < m; ++i)
-        for (std::size_t j = 0; j < m; ++j) ls[j] = FT(ls[j] + FT(l[i] * S0[i * m + j]));
-      l = std::move(ls);
-    }
-  }
-  add(a, l[0]);
-  for (std::size_t i = 0; i < n; ++i) add(ring[i], l[i + 1]);
-  return out;
-}
-
-/// FT from an exact rational (parameters): rounded to nearest for floating
-/// types and MPFR, exact for mpq_class, an enclosure for intervals.
-template <class FT>
-FT ft_from_rational(const mpq_class& q) {
-  if constexpr (std::is_same_v<FT, mpq_class>) {
-    return q;
-  } else if constexpr (std::is_same_v<FT, Interval>) {
-    const double d = q.get_d();  // truncated: within one ulp
-    if (mpq_class(d) == q) return Interval(d);
-    return Interval(std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY));
-  } else if constexpr (requires(FT r) { r.get(); FT::precision; }) {
-    FT r;
-    mpfr_set_q(const_cast<mpfr_ptr>(r.get()), q.get_mpq_t(), MPFR_RNDN);
-    return r;
-  } else if constexpr (std::is_same_v<FT, long double>) {
-    Mpfr_temp t(128);
-    mpfr_set_q(t.v, q.get_mpq_t(), MPFR_RNDN);
-    return mpfr_get_ld(t.v, MPFR_RNDN);
-  } else {
-    Mpfr_temp t(64);
-    mpfr_set_q(t.v, q.get_mpq_t(), MPFR_RNDN);
-    return FT(mpfr_get_d(t.v, MPFR_RNDN));
-  }
-}
-
-/// Whether the closed triangle u, v >= 0, u + v <= 1 contains (u, v), decided
-/// exactly for doubles (TwoSum).
-inline bool in_parameter_triangle(double u, double v) {
-  if (!(u >= 0 && v >= 0)) return false;
-  const double s = u + v;
-  const double bv = s - u, err = (u - (s - bv)) + (v - bv);  // u + v = s + err exactly
-  return s < 1 || (s == 1 && err <= 0);
-}
-
-}  // namespace internal
 
 /// \brief The limit surface of a Loop control mesh, evaluated exactly at any
 /// (face, u, v) under kernel K (method: see the file comment).
@@ -716,8 +125,10 @@ class Loop_limit_surface {
   /// smallest positive double); exceeding it is reported as a failure.
   static constexpr unsigned max_levels = 1200;
 
-  explicit Loop_limit_surface(const Mesh& control, const Loop_options& options = {}, const K& kernel = K{})
-      : kernel_(kernel), weights_(options) {
+  /// The kernel argument is accepted for a uniform interface: evaluation
+  /// uses only K's number type, never a kernel object.
+  explicit Loop_limit_surface(const Mesh& control, const Loop_options& options = {}, const K& /*kernel*/ = K{})
+      : weights_(options) {
     for (std::size_t v = 0; v < control.vertices.size(); ++v) {
       if (!internal::point_is_finite(control.vertices[v]))
         throw Non_finite_input("Loop limit surface: vertex " + std::to_string(v) + " has a NaN or infinite coordinate");
@@ -763,9 +174,8 @@ class Loop_limit_surface {
   }
   /// The point of a control slot (a ghost resolved).
   Point_3<FT> slot_point(const internal::Patch_slot& s) const {
-    if (!s.is_ghost()) return points_[s.a];
-    const Point_3<FT>&a = points_[s.a], &b = points_[s.b], &c = points_[s.c];
-    return Point_3<FT>{FT(FT(a.x + b.x) - c.x), FT(FT(a.y + b.y) - c.y), FT(FT(a.z + b.z) - c.z)};
+    Point_3<FT> ghost;
+    return internal::slot_point(s, points_, ghost);
   }
 
   /// How face f is evaluated. \throws Invalid_surface_parameter for a bad index.
@@ -781,10 +191,7 @@ class Loop_limit_surface {
     check_face(f);
     if (slot_index_[f] == invalid_index)
       throw Invalid_surface_parameter("Loop limit surface: face " + std::to_string(f) + " is not a regular patch");
-    std::array<Point_3<FT>, 12> p;
-    const auto& s = slots_[slot_index_[f]];
-    for (int i = 0; i < 12; ++i) p[i] = slot_point(s[i]);
-    return p;
+    return control_net_unchecked(f);
   }
 
   /// The quartic Bezier form of a regular (or regular crease) patch (for
@@ -805,7 +212,7 @@ class Loop_limit_surface {
     const Default_fp_environment_if<K::is_certified> environment;
     check(f, u, v);
     if (kind_[f] != Loop_patch_kind::irregular) {
-      const auto j = evaluate_quartic_bezier_jet(bezier_patch_unchecked(f), FT(u), FT(v));
+      const auto j = evaluate_quartic_bezier_jet(loop_patch_to_bezier(control_net_unchecked(f), one_24_), FT(u), FT(v));
       return jet(j.position, j.du, j.dv, 0);
     }
     return irregular(f, u, v, true);
@@ -827,6 +234,7 @@ class Loop_limit_surface {
 
  private:
   using A = internal::Point_access<Point>;
+  using Patch = internal::Loop_local_patch<FT>;
   static_assert(sizeof(Point_3<FT>) == 3 * sizeof(FT), "Point_3<FT> must be three packed FT");
 
   void check_face(Index f) const {
@@ -843,11 +251,11 @@ class Loop_limit_surface {
                                       ") is outside the triangle u, v >= 0, u + v <= 1");
   }
 
-  Quartic_bezier_patch<FT> bezier_patch_unchecked(Index f) const {
+  std::array<Point_3<FT>, 12> control_net_unchecked(Index f) const {
     std::array<Point_3<FT>, 12> p;
     const auto& s = slots_[slot_index_[f]];
     for (int i = 0; i < 12; ++i) p[i] = slot_point(s[i]);
-    return loop_patch_to_bezier(p, one_24_);
+    return p;
   }
   // sum_i b_i(u, v) p_i with the 12 box-spline values (one pass, no Bezier net).
   Point_3<FT> evaluate_regular(Index f, const FT& u, const FT& v) const {
@@ -855,147 +263,146 @@ class Loop_limit_surface {
     const std::array<FT, 12> b = loop_patch_basis_times_24(w, u, v);
     const auto& s = slots_[slot_index_[f]];
     FT x(0), y(0), z(0);
+    Point_3<FT> ghost;
     for (int i = 0; i < 12; ++i) {
-      const Point_3<FT>& a = points_[s[i].a];
-      if (!s[i].is_ghost()) {
-        x = FT(x + FT(b[i] * a.x)), y = FT(y + FT(b[i] * a.y)), z = FT(z + FT(b[i] * a.z));
-      } else {
-        const Point_3<FT>&pb = points_[s[i].b], &pc = points_[s[i].c];
-        x = FT(x + FT(b[i] * FT(FT(a.x + pb.x) - pc.x)));
-        y = FT(y + FT(b[i] * FT(FT(a.y + pb.y) - pc.y)));
-        z = FT(z + FT(b[i] * FT(FT(a.z + pb.z) - pc.z)));
-      }
+      const Point_3<FT>& a = internal::slot_point(s[i], points_, ghost);
+      x = FT(x + FT(b[i] * a.x)), y = FT(y + FT(b[i] * a.y)), z = FT(z + FT(b[i] * a.z));
     }
     return Point_3<FT>{FT(x * one_24_), FT(y * one_24_), FT(z * one_24_)};
   }
 
-  static Point_3<FT> cross(const Point_3<FT>& a, const Point_3<FT>& b) {
-    return {FT(FT(a.y * b.z) - FT(a.z * b.y)), FT(FT(a.z * b.x) - FT(a.x * b.z)), FT(FT(a.x * b.y) - FT(a.y * b.x))};
-  }
   static Loop_limit_jet<FT> jet(const Point_3<FT>& p, const Point_3<FT>& du, const Point_3<FT>& dv, unsigned levels) {
     Loop_limit_jet<FT> r;
-    r.position = p, r.du = du, r.dv = dv, r.normal = cross(du, dv), r.levels = levels;
+    r.position = p, r.du = du, r.dv = dv, r.normal = internal::point_cross(du, dv), r.levels = levels;
     return r;
   }
 
-  // Local subdivision until the sub-patch holding (u, v) is regular. Along
-  // the descent towards a smooth extraordinary vertex the local patch repeats
-  // itself after one step (same faces, same rule data: Stam's subdivision
-  // matrix); the last step's stencils are then reused, skipping the
-  // topology, the classification and the extraction.
+  // The last irregular step of a descent: its patch's structure, its
+  // corners' regularity, the child taken and the stencils of that child's
+  // vertices.
+  struct Step_memo {
+    std::vector<Triangle> faces;
+    internal::Loop_rule_data rules;
+    std::array<bool, 3> corner_regular{};
+    int child = -1;
+    std::vector<Triangle> child_faces;
+    internal::Loop_rule_data child_rules;
+    internal::Stencil_list<FT> stencils;
+  };
+  // A descent of local subdivision towards a point: the current local patch,
+  // the point's exact parameters in it, J = d(s, t) / d(u0, v0) and the memo.
+  struct Descent {
+    Patch patch;
+    mpq_class u, v;
+    FT J[2][2] = {{FT(1), FT(0)}, {FT(0), FT(1)}};
+    Step_memo memo;
+    bool have_memo = false;
+  };
+
+  // Local subdivision until the sub-patch holding (u, v) is regular (or
+  // (u, v) is an irregular corner). Along the descent towards a smooth
+  // extraordinary vertex the local patch repeats itself after one step (same
+  // faces, same rule data: Stam's subdivision matrix); the last step's
+  // stencils are then reused, skipping the topology, the classification and
+  // the extraction.
   Loop_limit_jet<FT> irregular(Index f, double u0, double v0, bool derivatives) const {
-    using Patch = internal::Loop_local_patch<FT>;
-    using Stencils = std::vector<std::vector<internal::Weighted<FT>>>;
-    Patch P = internal::extract_local_patch<FT>(topology_, rules_, f, 3, [&](Index v, FT* out) {
+    Descent d;
+    d.patch = internal::extract_local_patch<FT>(topology_, rules_, f, 3, [&](Index v, FT* out) {
       out[0] = points_[v].x, out[1] = points_[v].y, out[2] = points_[v].z;
     });
-    mpq_class u(u0), v(v0);
-    const mpq_class half(1, 2), one(1);
-    // J = d(s, t) / d(u0, v0) of the current patch's parameters.
-    FT J[2][2] = {{FT(1), FT(0)}, {FT(0), FT(1)}};
-    const Loop_options& o = options();
-    struct Memo {  // the last irregular step: its patch's structure and its child
-      std::vector<Triangle> faces;
-      internal::Loop_rule_data rules;
-      bool corner_regular[3] = {false, false, false};
-      int child = -1;
-      std::vector<Triangle> child_faces;
-      internal::Loop_rule_data child_rules;
-      Stencils stencils;
-    } memo;
-    bool have_memo = false;
+    d.u = u0, d.v = v0;
     for (unsigned level = 0;; ++level) {
-      const bool repeated = have_memo && P.faces == memo.faces && P.rules == memo.rules;
+      const bool repeated = d.have_memo && d.patch.faces == d.memo.faces && d.patch.rules == d.memo.rules;
       Mesh_topology t;
-      bool corner_regular[3];
+      std::array<bool, 3> corner_regular;
       if (repeated) {
-        std::copy_n(memo.corner_regular, 3, corner_regular);
+        corner_regular = d.memo.corner_regular;
       } else {
-        t = internal::local_topology(P);
+        t = internal::local_topology(d.patch);
         std::array<internal::Patch_slot, 12> s;
-        if (internal::classify_loop_patch(t, P.rules, o, 0, &s) != Loop_patch_kind::irregular) {
-          std::array<Point_3<FT>, 12> net;
-          for (int i = 0; i < 12; ++i) {
-            const FT* a = P.value(s[i].a);
-            net[i] = {a[0], a[1], a[2]};
-            if (s[i].is_ghost()) {
-              const FT *b = P.value(s[i].b), *c = P.value(s[i].c);
-              net[i] = {FT(FT(a[0] + b[0]) - c[0]), FT(FT(a[1] + b[1]) - c[1]), FT(FT(a[2] + b[2]) - c[2])};
-            }
-          }
-          const auto bez = loop_patch_to_bezier(net, one_24_);
-          const FT us = internal::ft_from_rational<FT>(u), vs = internal::ft_from_rational<FT>(v);
-          if (!derivatives) return jet(evaluate_quartic_bezier(bez, us, vs), {}, {}, level);
-          const auto j = evaluate_quartic_bezier_jet(bez, us, vs);
-          // [S_u0 S_v0] = [Q_s Q_t] J
-          const auto comb = [&](const Point_3<FT>& a, const FT& x, const Point_3<FT>& b, const FT& y) {
-            return Point_3<FT>{FT(FT(a.x * x) + FT(b.x * y)), FT(FT(a.y * x) + FT(b.y * y)), FT(FT(a.z * x) + FT(b.z * y))};
-          };
-          return jet(j.position, comb(j.du, J[0][0], j.dv, J[1][0]), comb(j.du, J[0][1], j.dv, J[1][1]), level);
-        }
-        for (int k = 0; k < 3; ++k) corner_regular[k] = internal::patch_corner_is_regular(t, P.rules, o, 0, k);
+        if (internal::classify_loop_patch(t, d.patch.rules, options(), 0, &s) != Loop_patch_kind::irregular)
+          return on_regular_sub_patch(d, s, derivatives, level);
+        for (int k = 0; k < 3; ++k) corner_regular[k] = internal::patch_corner_is_regular(t, d.patch.rules, options(), 0, k);
       }
-      // At an irregular corner itself: its exact limit position and tangent plane.
-      int corner = -1;
-      if (sgn(u) == 0 && sgn(v) == 0) corner = 0;
-      else if (u == one) corner = 1;
-      else if (v == one) corner = 2;
+      const int corner = sgn(d.u) == 0 && sgn(d.v) == 0 ? 0 : d.u == 1 ? 1 : d.v == 1 ? 2 : -1;
       if (corner >= 0 && !corner_regular[corner]) {
-        if (repeated) t = internal::local_topology(P);
-        const Index a = P.faces[0][corner];
-        const auto val = internal::exact_limit_values(t, P.rules, weights_, a, 3, P.values.data());
-        Loop_limit_jet<FT> r;
-        r.position = {val[0], val[1], val[2]};
-        r.has_derivatives = false;
-        r.du = r.dv = Point_3<FT>{FT(0), FT(0), FT(0)};
-        r.levels = level;
-        if (derivatives) r.normal = corner_normal(P, t, corner);
-        return r;
+        if (repeated) t = internal::local_topology(d.patch);
+        return at_irregular_corner(d.patch, t, corner, derivatives, level);
       }
       if (level >= max_levels)
         throw Error(Error_code::computation_failure, "Loop limit surface: no regular sub-patch after " +
                                                          std::to_string(max_levels) + " levels");
-      const mpq_class w = one - u - v;
-      int c;
-      mpq_class nu, nv;
-      if (w >= half) c = 0, nu = 2 * u, nv = 2 * v;
-      else if (u >= half) c = 1, nu = 2 * v, nv = 2 * w;
-      else if (v >= half) c = 2, nu = 2 * w, nv = 2 * u;
-      else c = 3, nu = one - 2 * w, nv = one - 2 * u;
-      u = nu, v = nv;
-      if (derivatives) {
-        FT N[2][2];
-        for (int r = 0; r < 2; ++r)
-          for (int k = 0; k < 2; ++k)
-            N[r][k] = FT(FT(FT(loop_child_jacobian[c][r][0]) * J[0][k]) + FT(FT(loop_child_jacobian[c][r][1]) * J[1][k]));
-        for (int r = 0; r < 2; ++r)
-          for (int k = 0; k < 2; ++k) J[r][k] = N[r][k];
-      }
-      if (repeated && memo.child == c) {
-        Patch Q;
-        Q.dim = 3;
-        Q.faces = memo.child_faces;
-        Q.rules = memo.child_rules;
-        Q.values.assign(memo.stencils.size() * 3, FT(0));
-        for (std::size_t i = 0; i < memo.stencils.size(); ++i)
-          for (const auto& [x, wt] : memo.stencils[i])
-            for (int k = 0; k < 3; ++k) Q.values[i * 3 + k] = FT(Q.values[i * 3 + k] + FT(wt * P.values[std::size_t(x) * 3 + k]));
-        P = std::move(Q);
+      const int c = internal::descend_to_child(d.u, d.v);
+      if (derivatives) internal::descend_jacobian(d.J, c);
+      if (repeated && d.memo.child == c) {
+        d.patch = repeat_memo(d.memo, d.patch);
         continue;
       }
-      if (repeated) t = internal::local_topology(P);
-      Stencils st;
-      auto children = internal::refine_local_patch<K>(P, t, weights_, 1u << c, &st);
-      memo.faces = P.faces, memo.rules = P.rules, memo.child = c;
-      std::copy_n(corner_regular, 3, memo.corner_regular);
-      memo.child_faces = children[c].faces, memo.child_rules = children[c].rules, memo.stencils = std::move(st);
-      have_memo = true;
-      P = std::move(children[c]);
+      if (repeated) t = internal::local_topology(d.patch);
+      refine_and_remember(d, t, corner_regular, c);
     }
   }
 
+  // The point (and, with derivatives, the chain-ruled jet) on a regular
+  // sub-patch with control slots s.
+  Loop_limit_jet<FT> on_regular_sub_patch(const Descent& d, const std::array<internal::Patch_slot, 12>& s,
+                                          bool derivatives, unsigned level) const {
+    const std::vector<FT> values = internal::patch_net<FT>(s, 3, [&](Index x) { return d.patch.value(x); });
+    std::array<Point_3<FT>, 12> net;
+    for (int i = 0; i < 12; ++i) net[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
+    const auto bez = loop_patch_to_bezier(net, one_24_);
+    const FT us = internal::ft_from_rational<FT>(d.u), vs = internal::ft_from_rational<FT>(d.v);
+    if (!derivatives) return jet(evaluate_quartic_bezier(bez, us, vs), {}, {}, level);
+    const auto j = evaluate_quartic_bezier_jet(bez, us, vs);
+    // [S_u0 S_v0] = [Q_s Q_t] J
+    return jet(j.position, internal::point_combination(d.J[0][0], j.du, d.J[1][0], j.dv),
+               internal::point_combination(d.J[0][1], j.du, d.J[1][1], j.dv), level);
+  }
+
+  // At an irregular corner itself: its exact limit position and the
+  // tangent-mask normal (no parametric derivatives).
+  Loop_limit_jet<FT> at_irregular_corner(const Patch& P, const Mesh_topology& t, int corner, bool derivatives,
+                                         unsigned level) const {
+    const Index a = P.faces[0][corner];
+    const auto val = internal::exact_limit_values(t, P.rules, weights_, a, 3, P.values.data());
+    Loop_limit_jet<FT> r;
+    r.position = {val[0], val[1], val[2]};
+    r.has_derivatives = false;
+    r.du = r.dv = Point_3<FT>{FT(0), FT(0), FT(0)};
+    r.levels = level;
+    if (derivatives) r.normal = corner_normal(P, t, corner);
+    return r;
+  }
+
+  // The child patch of a repeated step: the memo's structure, its stencils
+  // applied to the current values.
+  static Patch repeat_memo(const Step_memo& memo, const Patch& P) {
+    Patch Q;
+    Q.dim = 3;
+    Q.faces = memo.child_faces;
+    Q.rules = memo.child_rules;
+    const internal::Stencil_list<FT>& st = memo.stencils;
+    Q.values.assign(st.size() * 3, FT(0));
+    for (std::size_t i = 0; i < st.size(); ++i)
+      for (std::size_t j = st.begin[i]; j < st.begin[i + 1]; ++j)
+        for (int k = 0; k < 3; ++k)
+          Q.values[i * 3 + k] = FT(Q.values[i * 3 + k] + FT(st.weights[j] * P.values[std::size_t(st.vertices[j]) * 3 + k]));
+    return Q;
+  }
+
+  // One local refinement step to child c, remembered for the next level.
+  void refine_and_remember(Descent& d, const Mesh_topology& t, const std::array<bool, 3>& corner_regular, int c) const {
+    internal::Stencil_list<FT> st;
+    auto children = internal::refine_local_patch<K>(d.patch, t, weights_, 1u << c, &st);
+    Step_memo& memo = d.memo;
+    memo.faces = d.patch.faces, memo.rules = d.patch.rules, memo.child = c, memo.corner_regular = corner_regular;
+    memo.child_faces = children[c].faces, memo.child_rules = children[c].rules, memo.stencils = std::move(st);
+    d.have_memo = true;
+    d.patch = std::move(children[c]);
+  }
+
   // Tangent-mask normal at corner `corner` of the local patch's face 0.
-  Point_3<FT> corner_normal(const internal::Loop_local_patch<FT>& P, const Mesh_topology& t, int corner) const {
+  Point_3<FT> corner_normal(const Patch& P, const Mesh_topology& t, int corner) const {
     Loop_features lf;
     lf.vertex_kind = P.rules.kind;
     lf.edge_is_crease.assign(t.number_of_edges(), 0);
@@ -1007,10 +414,9 @@ class Loop_limit_surface {
     const auto [s1, s2] = tangent_stencils(t, lf, weights_, a, h);
     std::vector<Point_3<FT>> pts(P.number_of_vertices());
     for (Index i = 0; i < pts.size(); ++i) pts[i] = {P.value(i)[0], P.value(i)[1], P.value(i)[2]};
-    return cross(apply_stencil(s1, pts), apply_stencil(s2, pts));
+    return internal::point_cross(apply_stencil(s1, pts), apply_stencil(s2, pts));
   }
 
-  K kernel_;
   mutable Loop_weights<K> weights_;  // reserved at construction: queries only read it
   std::vector<Point_3<FT>> points_;
   Mesh_topology topology_;

@@ -16,6 +16,9 @@
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
+#include "relgeo/subdivision/internal/loop_rules.h"
+#include "relgeo/subdivision/internal/point_algebra.h"
+#include "relgeo/subdivision/loop_features.h"
 #include "relgeo/subdivision/loop_masks.h"
 #include "relgeo/subdivision/loop_weights.h"
 
@@ -63,8 +66,9 @@ class Loop_subdivider {
   using Point = typename K::Point_3;
   using Mesh = Triangle_mesh<Point>;
 
-  explicit Loop_subdivider(const Loop_options& options = {}, const K& kernel = K{})
-      : kernel_(kernel), weights_(options) {}
+  /// The kernel argument is accepted for a uniform interface: refinement
+  /// uses only K's number type (constructions in FT), never a kernel object.
+  explicit Loop_subdivider(const Loop_options& options = {}, const K& /*kernel*/ = K{}) : weights_(options) {}
 
   const Loop_options& options() const { return weights_.options(); }
   Loop_weights<K>& weights() { return weights_; }
@@ -151,6 +155,7 @@ class Loop_subdivider {
  private:
   using A = internal::Point_access<Point>;
   using Acc = Point_3<FT>;
+  static constexpr bool native = std::is_same_v<Point, Acc>;
 
   static void check_coordinates(const Mesh& m) {
     for (std::size_t v = 0; v < m.vertices.size(); ++v)
@@ -168,238 +173,296 @@ class Loop_subdivider {
                     std::string("Loop subdivision: the ") + what + " overflows at vertex " + std::to_string(v) +
                         " (coordinates too close to the largest finite value of the number type)");
   }
-  static void add(Acc& a, const Acc& p) {
-    a.x = FT(a.x + p.x), a.y = FT(a.y + p.y), a.z = FT(a.z + p.z);
-  }
-  // w1 p + w2 q
-  static Acc comb(const FT& w1, const Acc& p, const FT& w2, const Acc& q) {
-    return Acc{FT(FT(w1 * p.x) + FT(w2 * q.x)), FT(FT(w1 * p.y) + FT(w2 * q.y)),
-               FT(FT(w1 * p.z) + FT(w2 * q.z))};
-  }
-  static Acc scale(const FT& w, const Acc& p) { return Acc{FT(w * p.x), FT(w * p.y), FT(w * p.z)}; }
-  static Acc sum(const Acc& p, const Acc& q) {
-    return Acc{FT(p.x + q.x), FT(p.y + q.y), FT(p.z + q.z)};
-  }
 
-  K kernel_;
+  bool blz() const { return options().crease_rules == Loop_crease_rules::biermann_levin_zorin; }
+
+  // The named steps of step(), in order. Each reads the parent's adjacency lv
+  // and coordinates p and writes the scratch members below or the result.
+  const Acc* coordinates(const Mesh& m);
+  void sum_rings(const Level& lv, const Acc* p);
+  void find_sector_sizes(const Level& lv);
+  void vertex_points(const Level& lv, const Acc* p, std::vector<Acc>& q) const;
+  void mark_explicit_rings(const Level& lv);
+  void edge_points(const Level& lv, const Acc* p, std::vector<Acc>& q, bool to_limit);
+  void child_faces(const Mesh& m, const Level& lv, const std::vector<Acc>& q, bool to_limit, Mesh& out);
+  static void child_tags(const Mesh& m, const Level& lv, Mesh& out);
+  void limit_of_new_vertices(const Level& lv, std::vector<Acc>& q);
+  void limit_of_old_vertices(const Level& lv, const Acc* p, std::vector<Acc>& q);
+
   Loop_weights<K> weights_;
-  std::vector<Acc> ring_, crease_ring_, wing_, ring2_;
+  // Scratch buffers of step(), members so that repeated calls reuse their
+  // memory: coordinates in FT (CGAL points), per vertex the ring sum, the
+  // crease-neighbour sum, the valence, the refined ring sum (explicit_ring),
+  // per face the sum of its new vertices (wing), per half-edge the sector size.
+  std::vector<Acc> coords_, ring_, crease_ring_, wing_, ring2_;
   std::vector<std::uint8_t> explicit_ring_;
   std::vector<Index> valence_, sector_faces_;
+  bool any_crease_ = false;
+  bool any_special_ = false;  // a crease edge or a tagged corner (BLZ needs sectors even without creases)
 };
 
 template <class K>
 auto Loop_subdivider<K>::step(const Mesh& m, const Level& lv, bool to_limit, Level* next) -> Mesh {
-  const Index nv = static_cast<Index>(m.vertices.size());
-  const Mesh_topology& t = lv.topology;
-  const Loop_features& f = lv.features;
-  const Index ne = static_cast<Index>(t.number_of_edges()), nf = static_cast<Index>(m.faces.size());
-  const Loop_weights<K>& w = weights_;
-  const bool blz = options().crease_rules == Loop_crease_rules::biermann_levin_zorin;
-
-  // Coordinates in FT (relgeo points already are; CGAL points are read once).
-  constexpr bool native = std::is_same_v<Point, Acc>;
-  std::vector<Acc> p_copy;
-  const Acc* p = nullptr;
-  if constexpr (native) {
-    p = m.vertices.data();
-  } else {
-    p_copy.resize(nv);
-    for (Index v = 0; v < nv; ++v)
-      p_copy[v] = Acc{A::x(m.vertices[v]), A::y(m.vertices[v]), A::z(m.vertices[v])};
-    p = p_copy.data();
-  }
-
-  // Ring sums and valences, edge by edge (no ordered rings needed).
-  // Scratch buffers are members: repeated calls reuse their memory.
-  std::vector<Acc>& ring = ring_;
-  std::vector<Acc>& crease_ring = crease_ring_;
-  std::vector<Index>& valence = valence_;
-  ring.assign(nv, Acc{FT(0), FT(0), FT(0)});
-  valence.assign(nv, 0);
-  bool any_crease = false;
-  for (Index e = 0; e < ne; ++e) any_crease |= f.edge_is_crease[e] != 0;
-  // Special (crease or corner) vertices: a tagged corner needs no crease edge,
-  // and BLZ's edge rule next to it needs its sector size all the same.
-  bool any_special = any_crease;
-  for (Index v = 0; v < nv && !any_special; ++v) any_special = f.is_special(v);
-  if (any_crease) crease_ring.assign(nv, Acc{FT(0), FT(0), FT(0)});
-  for (Index e = 0; e < ne; ++e) {
-    const Index h = t.edge_halfedge(e), a = t.source(h), b = t.target(h);
-    add(ring[a], p[b]), add(ring[b], p[a]);
-    ++valence[a], ++valence[b];
-    if (f.edge_is_crease[e]) add(crease_ring[a], p[b]), add(crease_ring[b], p[a]);
-  }
-  Index max_valence = 6;
-  for (Index v = 0; v < nv; ++v) max_valence = std::max(max_valence, valence[v]);
-  weights_.reserve(max_valence);
-
-  // BLZ: sector size of every outgoing non-crease half-edge of a special vertex.
-  std::vector<Index>& sector_faces = sector_faces_;
-  if (blz && any_special) {
-    sector_faces.assign(3 * std::size_t(nf), 0);
-    for (Index v = 0; v < nv; ++v) {
-      if (!f.is_special(v)) continue;
-      t.for_each_outgoing(v, [&](Index h) {
-        if (sector_faces[h] != 0) return;
-        const Loop_sector s = loop_sector(t, f, v, h);
-        Index g = s.first;  // every outgoing half-edge of the sector gets its size
-        for (Index i = 0; i < s.faces() && g != invalid_index; ++i, g = t.ccw_outgoing(g))
-          sector_faces[g] = s.faces();
-      });
-    }
-  }
-
+  const Acc* p = coordinates(m);
+  sum_rings(lv, p);
+  find_sector_sizes(lv);
   Mesh out;
   std::vector<Acc> q_buf;
   std::vector<Acc>& q = [&]() -> std::vector<Acc>& {
     if constexpr (native) return out.vertices;
     else return q_buf;
   }();
-  q.resize(std::size_t(nv) + ne);
-  // Vertex points.
-  for (Index v = 0; v < nv; ++v) {
-    switch (f.vertex_kind[v]) {
-      case Vertex_kind::smooth:
-      case Vertex_kind::dart: q[v] = comb(w.centre(valence[v]), p[v], w.beta(valence[v]), ring[v]); break;
-      case Vertex_kind::crease: q[v] = comb(w.three_quarters(), p[v], w.eighth(), crease_ring[v]); break;
-      default: q[v] = p[v];
-    }
-  }
-  // With to_limit, the limit masks of the refined mesh are accumulated on the
-  // way, from the parent's adjacency (no adjacency of the refined mesh):
-  //  old vertex v: its neighbours are the new vertices of its edges (ring,
-  //  reused: the parent's ring sums are no longer needed);
-  //  new vertex of a smooth edge (interior, valence 6): the two moved
-  //  endpoints and the new vertices of the other edges of both faces (from
-  //  per-face sums of the new vertices, `wing`);
-  //  new vertex of a crease edge: its crease neighbours, the moved endpoints.
-  std::vector<Acc>& wing = wing_;
-  std::vector<Acc>& ring2 = ring2_;
-  std::vector<std::uint8_t>& explicit_ring = explicit_ring_;
-  if (to_limit) {
-    wing.resize(nf);  // per face: the sum of its three new vertices
-    // A smooth vertex all of whose edges follow the standard rule has the
-    // refined ring sum 3n/8 p + 5/8 R (R its ring sum): no accumulation. The
-    // others (darts; with BLZ, neighbours of crease/corner vertices) sum
-    // their edge points explicitly.
-    explicit_ring.assign(any_special ? nv : 0, 0);  // without creases there are no darts
-    if (any_special)
-      for (Index v = 0; v < nv; ++v) explicit_ring[v] = f.vertex_kind[v] == Vertex_kind::dart;
-    if (blz && any_special)
-      for (Index e = 0; e < ne; ++e) {
-        const Index h = t.edge_halfedge(e), a = t.source(h), b = t.target(h);
-        if (!f.edge_is_crease[e] && f.is_special(a) != f.is_special(b)) explicit_ring[a] = explicit_ring[b] = 1;
-      }
-    if (any_special) {
-      ring2.resize(nv);
-      for (Index v = 0; v < nv; ++v)
-        if (explicit_ring[v]) ring2[v] = Acc{FT(0), FT(0), FT(0)};
-    }
-  }
-  // Edge points.
-  for (Index e = 0; e < ne; ++e) {
-    const Index h = t.edge_halfedge(e), a = t.source(h), b = t.target(h);
-    Acc& r = q[nv + e];
-    if (f.edge_is_crease[e]) {
-      r = comb(w.half(), p[a], w.half(), p[b]);
-    } else {
-      const Index c = t.target(Mesh_topology::next(h));
-      const Index d = t.target(Mesh_topology::next(t.opposite(h)));
-      if (blz && f.is_special(a) != f.is_special(b)) {
-        const Index v = f.is_special(a) ? a : b, o = v == a ? b : a;
-        const Index hv = v == a ? h : t.opposite(h);
-        const FT g = w.gamma(sector_faces[hv], f.vertex_kind[v] == Vertex_kind::corner);
-        const Acc s = comb(FT(w.three_quarters() - g), p[v], g, p[o]);
-        r = sum(s, comb(w.eighth(), p[c], w.eighth(), p[d]));
-      } else {
-        r = comb(w.three_eighths(), sum(p[a], p[b]), w.eighth(), sum(p[c], p[d]));
-      }
-    }
-    if (to_limit && any_special) {
-      if (explicit_ring[a]) add(ring2[a], r);
-      if (explicit_ring[b]) add(ring2[b], r);
-    }
-  }
-  // Faces.
-  out.faces.resize(4 * std::size_t(nf));
-  for (Index fi = 0; fi < nf; ++fi) {
-    const Triangle& tr = m.faces[fi];
-    const Index e0 = t.edge(3 * fi), e1 = t.edge(3 * fi + 1), e2 = t.edge(3 * fi + 2);
-    const Index m0 = nv + e0, m1 = nv + e1, m2 = nv + e2;
-    Triangle* o = &out.faces[4 * std::size_t(fi)];
-    o[0] = {tr[0], m0, m2};
-    o[1] = {tr[1], m1, m0};
-    o[2] = {tr[2], m2, m1};
-    o[3] = {m0, m1, m2};
-    if (to_limit) wing[fi] = sum(q[m0], sum(q[m1], q[m2]));
-  }
-  // Tags.
-  if (!m.tags.empty()) {
-    std::vector<Edge> creases;
-    for (Index e = 0; e < ne; ++e)
-      if (f.edge_is_tagged[e]) {
-        const Edge ab = t.edge_vertices(e);
-        creases.push_back(Edge{ab.a, nv + e});
-        creases.push_back(Edge{ab.b, nv + e});
-      }
-    out.tags.set_creases(std::move(creases));
-    out.tags.set_corners(std::vector<Index>(m.tags.corners().begin(), m.tags.corners().end()));
-  }
-
+  q.resize(m.vertices.size() + lv.topology.number_of_edges());
+  vertex_points(lv, p, q);
+  if (to_limit) mark_explicit_rings(lv);
+  edge_points(lv, p, q, to_limit);
+  child_faces(m, lv, q, to_limit, out);
+  child_tags(m, lv, out);
   if (next) {
-    next->topology = Mesh_topology::refined(t, out.faces);
-    next->features = refined_loop_features(t, f, next->topology);
+    next->topology = Mesh_topology::refined(lv.topology, out.faces);
+    next->features = refined_loop_features(lv.topology, lv.features, next->topology);
   }
-
   if (to_limit) {
     // In place: new vertices first (they read the old vertices' refined
     // positions), then the old ones (they read only ring sums).
-    weights_.reserve(6);
-    const FT& c6 = w.limit_centre(6);
-    const FT& x6 = w.chi(6);
-    // New vertex m of a smooth edge (valence 6) between faces f and g:
-    // (1 - 6 chi) m + chi (a' + b' + wings), and the wings are the face sums
-    // of f and g minus m twice.
-    const FT c6m = FT(c6 - FT(x6 + x6));
-    for (Index e = 0; e < ne; ++e) {
-      Acc& r = q[nv + e];
-      const Index h = t.edge_halfedge(e);
-      const Acc ends = sum(q[t.source(h)], q[t.target(h)]);
-      if (f.edge_is_crease[e]) {
-        r = comb(w.two_thirds(), r, w.sixth(), ends);
-      } else {
-        const Acc around = sum(ends, sum(wing[Mesh_topology::face(h)], wing[Mesh_topology::face(t.opposite(h))]));
-        r = comb(c6m, r, x6, around);
-      }
-    }
-    const FT three_eighths_n_unit = w.three_eighths(), five_eighths = FT(w.half() + w.eighth());
-    const FT twelfth = FT(w.sixth() * w.half());
-    for (Index v = 0; v < nv; ++v) {
-      switch (f.vertex_kind[v]) {
-        case Vertex_kind::smooth:
-        case Vertex_kind::dart: {
-          const Index n = valence[v];
-          if (any_special && explicit_ring[v]) {
-            q[v] = comb(w.limit_centre(n), q[v], w.chi(n), ring2[v]);
-          } else {  // sum of the refined ring = 3n/8 p + 5/8 R
-            const Acc r2 = comb(FT(three_eighths_n_unit * FT(static_cast<int>(n))), p[v], five_eighths, ring[v]);
-            q[v] = comb(w.limit_centre(n), q[v], w.chi(n), r2);
-          }
-          break;
-        }
-        case Vertex_kind::crease:  // crease neighbours: (p + p_c) / 2 each
-          q[v] = sum(comb(w.two_thirds(), q[v], w.sixth(), p[v]), scale(twelfth, crease_ring[v]));
-          break;
-        default: break;
-      }
-    }
+    limit_of_new_vertices(lv, q);
+    limit_of_old_vertices(lv, p, q);
   }
   if constexpr (!native) {
     out.vertices.reserve(q.size());
     for (Acc& r : q) out.vertices.push_back(A::make(std::move(r.x), std::move(r.y), std::move(r.z)));
   }
   return out;
+}
+
+// Coordinates in FT (relgeo points already are; CGAL points are read once).
+template <class K>
+auto Loop_subdivider<K>::coordinates(const Mesh& m) -> const Acc* {
+  if constexpr (native) {
+    return m.vertices.data();
+  } else {
+    coords_.resize(m.vertices.size());
+    for (std::size_t v = 0; v < m.vertices.size(); ++v)
+      coords_[v] = Acc{A::x(m.vertices[v]), A::y(m.vertices[v]), A::z(m.vertices[v])};
+    return coords_.data();
+  }
+}
+
+// Ring sums, crease-neighbour sums and valences, edge by edge (no ordered
+// rings needed); reserves the weights of the largest valence.
+template <class K>
+void Loop_subdivider<K>::sum_rings(const Level& lv, const Acc* p) {
+  const Mesh_topology& t = lv.topology;
+  const Loop_features& f = lv.features;
+  const Index nv = static_cast<Index>(t.number_of_vertices()), ne = static_cast<Index>(t.number_of_edges());
+  ring_.assign(nv, Acc{FT(0), FT(0), FT(0)});
+  valence_.assign(nv, 0);
+  any_crease_ = false;
+  for (Index e = 0; e < ne; ++e) any_crease_ |= f.edge_is_crease[e] != 0;
+  if (any_crease_) crease_ring_.assign(nv, Acc{FT(0), FT(0), FT(0)});
+  // A tagged corner needs no crease edge, and BLZ's edge rule next to it
+  // needs its sector size all the same (fuzz/loop_subdivision found the
+  // sizes read from a buffer never filled).
+  any_special_ = any_crease_;
+  for (Index v = 0; v < nv && !any_special_; ++v) any_special_ = f.is_special(v);
+  for (Index e = 0; e < ne; ++e) {
+    const Index h = t.edge_halfedge(e), a = t.source(h), b = t.target(h);
+    internal::accumulate_point(ring_[a], p[b]), internal::accumulate_point(ring_[b], p[a]);
+    ++valence_[a], ++valence_[b];
+    if (f.edge_is_crease[e])
+      internal::accumulate_point(crease_ring_[a], p[b]), internal::accumulate_point(crease_ring_[b], p[a]);
+  }
+  Index max_valence = 6;
+  for (Index v = 0; v < nv; ++v) max_valence = std::max(max_valence, valence_[v]);
+  weights_.reserve(max_valence);
+}
+
+// BLZ: the sector size of every outgoing half-edge of a special vertex.
+template <class K>
+void Loop_subdivider<K>::find_sector_sizes(const Level& lv) {
+  if (!blz() || !any_special_) return;
+  sector_faces_.assign(lv.topology.number_of_halfedges(), 0);
+  internal::fill_sector_faces(lv.topology, lv.features, sector_faces_);
+}
+
+// Vertex points: the vertex rule on the pre-summed ring or crease neighbours.
+template <class K>
+void Loop_subdivider<K>::vertex_points(const Level& lv, const Acc* p, std::vector<Acc>& q) const {
+  const Index nv = static_cast<Index>(lv.topology.number_of_vertices());
+  for (Index v = 0; v < nv; ++v) {
+    const internal::Vertex_rule<FT> r = internal::vertex_point_rule(weights_, lv.features.vertex_kind[v], valence_[v]);
+    switch (r.neighbours) {
+      case internal::Rule_neighbours::ring: q[v] = internal::point_combination(*r.centre, p[v], *r.neighbour, ring_[v]); break;
+      case internal::Rule_neighbours::crease:
+        q[v] = internal::point_combination(*r.centre, p[v], *r.neighbour, crease_ring_[v]);
+        break;
+      case internal::Rule_neighbours::none: q[v] = p[v]; break;  // fixed: weight 1, copied
+    }
+  }
+}
+
+// With to_limit, the limit masks of the refined mesh are accumulated on the
+// way, from the parent's adjacency (no adjacency of the refined mesh):
+//  old vertex v: its neighbours are the new vertices of its edges (ring,
+//  reused: the parent's ring sums are no longer needed);
+//  new vertex of a smooth edge (interior, valence 6): the two moved
+//  endpoints and the new vertices of the other edges of both faces (from
+//  per-face sums of the new vertices, `wing`);
+//  new vertex of a crease edge: its crease neighbours, the moved endpoints.
+// A smooth vertex all of whose edges follow the standard rule has the refined
+// ring sum n e p + (e + 2 w) R (R its ring sum, e and w the standard end and
+// wing weights): no accumulation. The others (darts; with BLZ, ends of
+// modified edges) sum their edge points explicitly.
+template <class K>
+void Loop_subdivider<K>::mark_explicit_rings(const Level& lv) {
+  const Mesh_topology& t = lv.topology;
+  const Loop_features& f = lv.features;
+  const Index nv = static_cast<Index>(t.number_of_vertices()), ne = static_cast<Index>(t.number_of_edges());
+  wing_.resize(t.number_of_faces());
+  explicit_ring_.assign(any_special_ ? nv : 0, 0);  // without creases and corners no ring is explicit
+  if (!any_special_) return;
+  for (Index v = 0; v < nv; ++v) explicit_ring_[v] = f.vertex_kind[v] == Vertex_kind::dart;
+  for (Index e = 0; e < ne; ++e) {
+    const Index h = t.edge_halfedge(e), a = t.source(h), b = t.target(h);
+    if (internal::edge_rule_is_modified(options(), f.edge_is_crease[e] != 0, f.vertex_kind[a], f.vertex_kind[b]))
+      explicit_ring_[a] = explicit_ring_[b] = 1;
+  }
+  ring2_.resize(nv);
+  for (Index v = 0; v < nv; ++v)
+    if (explicit_ring_[v]) ring2_[v] = Acc{FT(0), FT(0), FT(0)};
+}
+
+// Edge points: the edge rule with equal weights factored out (ends and wings
+// of a standard edge are summed first).
+template <class K>
+void Loop_subdivider<K>::edge_points(const Level& lv, const Acc* p, std::vector<Acc>& q, bool to_limit) {
+  const Mesh_topology& t = lv.topology;
+  const Loop_features& f = lv.features;
+  const Index nv = static_cast<Index>(t.number_of_vertices()), ne = static_cast<Index>(t.number_of_edges());
+  for (Index e = 0; e < ne; ++e) {
+    const Index h = t.edge_halfedge(e), a = t.source(h), b = t.target(h);
+    const auto rule = internal::edge_point_rule(
+        weights_, f.edge_is_crease[e] != 0, [&](int end) { return f.vertex_kind[end == 0 ? a : b]; },
+        [&](int end) { return sector_faces_[end == 0 ? h : t.opposite(h)]; });
+    Acc& r = q[nv + e];
+    if (rule.shape() == internal::Edge_shape::crease) {
+      r = internal::point_combination(rule.end_a(), p[a], rule.end_b(), p[b]);
+    } else {
+      const Index c = t.target(Mesh_topology::next(h));
+      const Index d = t.target(Mesh_topology::next(t.opposite(h)));
+      if (rule.shape() == internal::Edge_shape::standard)
+        r = internal::point_combination(rule.end_a(), internal::point_sum(p[a], p[b]), rule.wing(),
+                                        internal::point_sum(p[c], p[d]));
+      else
+        r = internal::point_sum(internal::point_combination(rule.end_a(), p[a], rule.end_b(), p[b]),
+                                internal::point_combination(rule.wing(), p[c], rule.wing(), p[d]));
+    }
+    if (to_limit && any_special_) {
+      if (explicit_ring_[a]) internal::accumulate_point(ring2_[a], r);
+      if (explicit_ring_[b]) internal::accumulate_point(ring2_[b], r);
+    }
+  }
+}
+
+// The four children of every face (with to_limit, the per-face sums of the
+// new vertices).
+template <class K>
+void Loop_subdivider<K>::child_faces(const Mesh& m, const Level& lv, const std::vector<Acc>& q, bool to_limit,
+                                     Mesh& out) {
+  const Mesh_topology& t = lv.topology;
+  const Index nv = static_cast<Index>(m.vertices.size()), nf = static_cast<Index>(m.faces.size());
+  out.faces.resize(4 * std::size_t(nf));
+  for (Index fi = 0; fi < nf; ++fi) {
+    const Triangle& tr = m.faces[fi];
+    const Index m0 = nv + t.edge(3 * fi), m1 = nv + t.edge(3 * fi + 1), m2 = nv + t.edge(3 * fi + 2);
+    Triangle* o = &out.faces[4 * std::size_t(fi)];
+    o[0] = {tr[0], m0, m2};
+    o[1] = {tr[1], m1, m0};
+    o[2] = {tr[2], m2, m1};
+    o[3] = {m0, m1, m2};
+    if (to_limit) wing_[fi] = internal::point_sum(q[m0], internal::point_sum(q[m1], q[m2]));
+  }
+}
+
+// Each tagged crease (a, b) becomes (a, m), (m, b); corner tags are kept.
+template <class K>
+void Loop_subdivider<K>::child_tags(const Mesh& m, const Level& lv, Mesh& out) {
+  if (m.tags.empty()) return;
+  const Index nv = static_cast<Index>(m.vertices.size()), ne = static_cast<Index>(lv.topology.number_of_edges());
+  std::vector<Edge> creases;
+  for (Index e = 0; e < ne; ++e)
+    if (lv.features.edge_is_tagged[e]) {
+      const Edge ab = lv.topology.edge_vertices(e);
+      creases.push_back(Edge{ab.a, nv + e});
+      creases.push_back(Edge{ab.b, nv + e});
+    }
+  out.tags.set_creases(std::move(creases));
+  out.tags.set_corners(std::vector<Index>(m.tags.corners().begin(), m.tags.corners().end()));
+}
+
+// Limit positions of the new vertices, in place. A new vertex m of a smooth
+// edge (smooth, valence 6) between faces f and g: (1 - 6 chi) m + chi (a' +
+// b' + wings), and the wings are the face sums of f and g minus m twice. A
+// new vertex of a crease edge: the crease limit rule on the moved ends.
+template <class K>
+void Loop_subdivider<K>::limit_of_new_vertices(const Level& lv, std::vector<Acc>& q) {
+  const Mesh_topology& t = lv.topology;
+  const Index nv = static_cast<Index>(t.number_of_vertices()), ne = static_cast<Index>(t.number_of_edges());
+  weights_.reserve(6);
+  const internal::Vertex_rule<FT> smooth = internal::limit_point_rule(weights_, Vertex_kind::smooth, 6);
+  const internal::Vertex_rule<FT> crease = internal::limit_point_rule(weights_, Vertex_kind::crease, 0);
+  const FT smooth_centre_less_wings = FT(*smooth.centre - FT(*smooth.neighbour + *smooth.neighbour));
+  for (Index e = 0; e < ne; ++e) {
+    Acc& r = q[nv + e];
+    const Index h = t.edge_halfedge(e);
+    const Acc ends = internal::point_sum(q[t.source(h)], q[t.target(h)]);
+    if (lv.features.edge_is_crease[e]) {
+      r = internal::point_combination(*crease.centre, r, *crease.neighbour, ends);
+    } else {
+      const Acc around = internal::point_sum(
+          ends, internal::point_sum(wing_[Mesh_topology::face(h)], wing_[Mesh_topology::face(t.opposite(h))]));
+      r = internal::point_combination(smooth_centre_less_wings, r, *smooth.neighbour, around);
+    }
+  }
+}
+
+// Limit positions of the old vertices, in place, from ring sums: a smooth
+// vertex's refined ring sum explicitly (ring2) or from the standard edge rule
+// (see mark_explicit_rings); a crease vertex's refined crease neighbours are
+// the crease edge rule's (p + p_c) / 2, so the crease limit rule gives
+// neighbour * p (the two halves) + neighbour / 2 * the crease-neighbour sum.
+template <class K>
+void Loop_subdivider<K>::limit_of_old_vertices(const Level& lv, const Acc* p, std::vector<Acc>& q) {
+  const Index nv = static_cast<Index>(lv.topology.number_of_vertices());
+  const auto no_sector = [](int) -> Index { return 0; };
+  const auto smooth_ends = [](int) { return Vertex_kind::smooth; };
+  const auto crease_ends = [](int) { return Vertex_kind::crease; };
+  const auto standard = internal::edge_point_rule(weights_, false, smooth_ends, no_sector);
+  const auto crease_edge = internal::edge_point_rule(weights_, true, crease_ends, no_sector);
+  const FT& end = standard.end_a();
+  const FT refined_ring_weight = FT(standard.end_b() + FT(standard.wing() + standard.wing()));
+  const internal::Vertex_rule<FT> crease = internal::limit_point_rule(weights_, Vertex_kind::crease, 0);
+  const FT half_neighbour = FT(*crease.neighbour * crease_edge.end_b());
+  for (Index v = 0; v < nv; ++v) {
+    const Vertex_kind kind = lv.features.vertex_kind[v];
+    const Index n = valence_[v];
+    const internal::Vertex_rule<FT> r = internal::limit_point_rule(weights_, kind, n);
+    switch (r.neighbours) {
+      case internal::Rule_neighbours::ring:
+        if (any_special_ && explicit_ring_[v]) {
+          q[v] = internal::point_combination(*r.centre, q[v], *r.neighbour, ring2_[v]);
+        } else {
+          const Acc r2 = internal::point_combination(FT(end * FT(static_cast<int>(n))), p[v], refined_ring_weight, ring_[v]);
+          q[v] = internal::point_combination(*r.centre, q[v], *r.neighbour, r2);
+        }
+        break;
+      case internal::Rule_neighbours::crease:
+        q[v] = internal::point_sum(internal::point_combination(*r.centre, q[v], *r.neighbour, p[v]),
+                                   internal::point_scale(half_neighbour, crease_ring_[v]));
+        break;
+      case internal::Rule_neighbours::none: break;
+    }
+  }
 }
 
 /// Refines `m` `levels` times with Loop's rules under kernel K (default:

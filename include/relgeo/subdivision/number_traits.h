@@ -39,8 +39,6 @@
 #include <gmpxx.h>
 #include <mpfr.h>
 
-#include <cmath>
-#include <cstdint>
 #include <numeric>
 #include <string>
 #include <type_traits>
@@ -48,6 +46,7 @@
 #include "relgeo/core/errors.h"
 #include "relgeo/core/interval.h"
 #include "relgeo/core/mpfr_number.h"
+#include "relgeo/core/rounding.h"
 
 namespace relgeo {
 
@@ -71,24 +70,15 @@ inline bool rational_cos_2pi(long i, long n, int& twice) {
   }
 }
 
-/// RAII mpfr_t.
-struct Mpfr_temp {
-  explicit Mpfr_temp(mpfr_prec_t p) { mpfr_init2(v, p); }
-  ~Mpfr_temp() { mpfr_clear(v); }
-  Mpfr_temp(const Mpfr_temp&) = delete;
-  Mpfr_temp& operator=(const Mpfr_temp&) = delete;
-  mpfr_t v;
-};
-
-/// cos(2 pi i / n) to nearest at `prec` bits (the argument 2i/n is first
-/// rounded at prec + 64 bits; the result is correctly rounded but for that
-/// relative 2^-(prec+62) perturbation).
-inline void mpfr_cos_2pi(mpfr_t out, long i, long n) {
-  const mpfr_prec_t p = mpfr_get_prec(out) + 64;
-  Mpfr_temp x(p);
-  mpfr_set_si(x.v, 2 * (i % n), MPFR_RNDN);
-  mpfr_div_si(x.v, x.v, n, MPFR_RNDN);
-  mpfr_cospi(out, x.v, MPFR_RNDN);
+/// cos(2 pi i / n) to nearest at `bits` bits (the argument 2i/n is first
+/// rounded at bits + 64 bits; the result is correctly rounded but for that
+/// relative 2^-(bits+62) perturbation).
+inline Mpfr_value mpfr_cos_2pi(long i, long n, mpfr_prec_t bits) {
+  Mpfr_value x(bits + 64), c(bits);
+  mpfr_set_si(x.get(), 2 * (i % n), MPFR_RNDN);
+  mpfr_div_si(x.get(), x.get(), n, MPFR_RNDN);
+  mpfr_cospi(c.get(), x.get(), MPFR_RNDN);
+  return c;
 }
 
 }  // namespace internal
@@ -102,9 +92,7 @@ struct Loop_number_traits {
   static FT cos_2pi(long i, long n) {
     int twice = 0;
     if (internal::rational_cos_2pi(i, n, twice)) return FT(FT(twice) / FT(2));
-    internal::Mpfr_temp c(128);
-    internal::mpfr_cos_2pi(c.v, i, n);
-    return FT(mpfr_get_d(c.v, MPFR_RNDN));
+    return FT(round_mpfr<double>(internal::mpfr_cos_2pi(i, n, 128).get()));
   }
   static FT quotient(const FT& a, const FT& b) { return FT(a / b); }
   static std::string policy() { return "generic: p/q in FT, irrational cosines as the nearest double"; }
@@ -118,11 +106,7 @@ struct Loop_number_traits<T, std::enable_if_t<std::is_floating_point_v<T>>> {
   static T cos_2pi(long i, long n) {
     int twice = 0;
     if (internal::rational_cos_2pi(i, n, twice)) return static_cast<T>(twice) / 2;
-    internal::Mpfr_temp c(128);
-    internal::mpfr_cos_2pi(c.v, i, n);
-    if constexpr (std::is_same_v<T, float>) return mpfr_get_flt(c.v, MPFR_RNDN);
-    else if constexpr (std::is_same_v<T, double>) return mpfr_get_d(c.v, MPFR_RNDN);
-    else return mpfr_get_ld(c.v, MPFR_RNDN);
+    return round_mpfr<T>(internal::mpfr_cos_2pi(i, n, 128).get());
   }
   static T quotient(T a, T b) { return a / b; }
   static std::string policy() {
@@ -134,45 +118,35 @@ struct Loop_number_traits<T, std::enable_if_t<std::is_floating_point_v<T>>> {
 template <>
 struct Loop_number_traits<Interval> {
   static constexpr bool exact_rationals = false;
+  /// p / q one step outward of the rounded quotient unless it is exact
+  /// (core/rounding.h's div_bounds; 0 / q is the point 0).
   static Interval rational(long p, long q) {
-    const double d = static_cast<double>(p) / static_cast<double>(q);  // correctly rounded
-    if (std::fma(d, static_cast<double>(q), -static_cast<double>(p)) == 0) return Interval(d);
-    return Interval(std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY));
+    if (p == 0) return Interval(0.0);
+    const Double_bounds b = div_bounds(static_cast<double>(p), static_cast<double>(q));
+    return Interval(b.lo, b.hi);
   }
   static Interval cos_2pi(long i, long n) {
     int twice = 0;
     if (internal::rational_cos_2pi(i, n, twice)) return Interval(twice / 2.0);
-    internal::Mpfr_temp c(256);
-    internal::mpfr_cos_2pi(c.v, i, n);
-    return widen(c.v);
+    return widen(internal::mpfr_cos_2pi(i, n, 256));
   }
-  /// Interval division; \pre b does not contain 0.
-  static Interval quotient(const Interval& a, const Interval& b) {
-    if (!(b.inf() > 0 || b.sup() < 0))
-      throw Precondition_violation("Loop_number_traits<Interval>::quotient: divisor contains 0");
-    if (a.is_point() && b.is_point()) {  // exact quotients stay points
-      const double d = a.inf() / b.inf();
-      if (std::isfinite(d) && std::fma(d, b.inf(), -a.inf()) == 0) return Interval(d);
-    }
-    const double c[4] = {a.inf() / b.inf(), a.inf() / b.sup(), a.sup() / b.inf(), a.sup() / b.sup()};
-    double lo = c[0], hi = c[0];
-    for (double v : c) lo = std::min(lo, v), hi = std::max(hi, v);
-    return Interval(std::nextafter(lo, -INFINITY), std::nextafter(hi, INFINITY));
-  }
+  /// Interval division (exact quotients of points stay points). \pre b does
+  /// not contain 0: throws Precondition_violation.
+  static Interval quotient(const Interval& a, const Interval& b) { return a / b; }
   static std::string policy() {
     return "interval: enclosures of every rational and cosine (MPFR, 256 bits, outward)";
   }
 
  private:
   // [x - 2^-240 |x| - 2^-240, x + ...] rounded outward to doubles.
-  static Interval widen(const mpfr_t x) {
-    internal::Mpfr_temp lo(256), hi(256), eps(256);
-    mpfr_abs(eps.v, x, MPFR_RNDU);
-    mpfr_add_ui(eps.v, eps.v, 1, MPFR_RNDU);
-    mpfr_mul_2si(eps.v, eps.v, -240, MPFR_RNDU);
-    mpfr_sub(lo.v, x, eps.v, MPFR_RNDD);
-    mpfr_add(hi.v, x, eps.v, MPFR_RNDU);
-    return Interval(mpfr_get_d(lo.v, MPFR_RNDD), mpfr_get_d(hi.v, MPFR_RNDU));
+  static Interval widen(const Mpfr_value& x) {
+    Mpfr_value lo(256), hi(256), eps(256);
+    mpfr_abs(eps.get(), x.get(), MPFR_RNDU);
+    mpfr_add_ui(eps.get(), eps.get(), 1, MPFR_RNDU);
+    mpfr_mul_2si(eps.get(), eps.get(), -240, MPFR_RNDU);
+    mpfr_sub(lo.get(), x.get(), eps.get(), MPFR_RNDD);
+    mpfr_add(hi.get(), x.get(), eps.get(), MPFR_RNDU);
+    return Interval(round_mpfr<double>(lo.get(), Rounding::downward), round_mpfr<double>(hi.get(), Rounding::upward));
   }
 };
 
@@ -190,10 +164,8 @@ struct Loop_number_traits<mpq_class> {
   static mpq_class cos_2pi(long i, long n) {
     int twice = 0;
     if (internal::rational_cos_2pi(i, n, twice)) return rational(twice, 2);
-    internal::Mpfr_temp c(cos_precision_bits);
-    internal::mpfr_cos_2pi(c.v, i, n);
     mpq_class r;
-    mpfr_get_q(r.get_mpq_t(), c.v);  // exact: an MPFR value is a dyadic rational
+    mpfr_get_q(r.get_mpq_t(), internal::mpfr_cos_2pi(i, n, cos_precision_bits).get());  // exact: a dyadic rational
     return r;
   }
   static mpq_class quotient(const mpq_class& a, const mpq_class& b) { return mpq_class(a / b); }
@@ -211,11 +183,7 @@ struct Loop_number_traits<Mpfr_number<B>> {
   static FT cos_2pi(long i, long n) {
     int twice = 0;
     if (internal::rational_cos_2pi(i, n, twice)) return FT(twice) / FT(2);
-    FT r;
-    internal::Mpfr_temp c(B);
-    internal::mpfr_cos_2pi(c.v, i, n);
-    mpfr_set(const_cast<mpfr_ptr>(r.get()), c.v, MPFR_RNDN);  // r is ours: not really const
-    return r;
+    return FT(internal::mpfr_cos_2pi(i, n, B).get());  // already B bits: copied exactly
   }
   static FT quotient(const FT& a, const FT& b) { return a / b; }
   static std::string policy() {

@@ -6,6 +6,7 @@
 #include "commands/experiment/command.h"
 #include "commands/extrusion/command.h"
 #include "commands/hull/command.h"
+#include "commands/join/command.h"
 #include "commands/linsolve/command.h"
 #include "commands/orient_grid/command.h"
 #include "commands/subdivide/command.h"

@@ -117,6 +117,10 @@ Section_report extrusion_section(const Experiment_context& ctx);  // experiment/
 /// meshes to the exact limit surface per level and kernel, error bounds.
 Section_report subdivision_section(const Experiment_context& ctx);  // experiment/subdivision.cpp
 
+/// Joining mesh patches to trimmed NURBS faces (thesis Ch. 4): naive sewing
+/// against the Whitney joiner, errors before/after, certified fold counts.
+Section_report joining_section(const Experiment_context& ctx);  // experiment/joining.cpp
+
 /// Every section, in run order.
 inline constexpr Experiment_section experiment_sections[] = {
     {"kernels", "orientation grids and predicate workloads under every kernel: wrong answers, "
@@ -134,6 +138,9 @@ inline constexpr Experiment_section experiment_sections[] = {
     {"subdivision", "Loop subdivision: distance of control and limit meshes to the exact limit surface "
                     "per level 0..4 and kernel, error bounds (soundness, tightness), pictures",
      &subdivision_section},
+    {"joining", "joining mesh patches to trimmed NURBS faces: naive midpoint sewing vs the Whitney joiner, "
+                "absolute and normal-vector errors before/after, certified flipped triangles, (u,v) pictures",
+     &joining_section},
 };
 
 }  // namespace relgeo::tool

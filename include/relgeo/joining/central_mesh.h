@@ -1,0 +1,261 @@
+// relgeo/joining/central_mesh.h — the central mesh of thesis Sec. 4.3.2
+// step 3: the projected mesh patch without its peripheral triangles, so that
+// what remains lies strictly inside the projected boundary curves dR, at a
+// clearance that leaves room for well-shaped triangles of the external
+// region, and is a valid planar triangulation (every triangle positively
+// oriented, no two overlapping, a manifold with simple boundary cycles: the
+// constraints of the external region's triangulation).
+//
+// A triangle is removed when
+//  1. a corner is within `layers` rings of the mesh boundary (at least one
+//     layer goes, as the thesis requires);
+//  2. an edge meets dR (certified segment tests, K) or a corner lies outside
+//     dR (one certified winding number per connected piece of the mesh cut
+//     along the crossing edges);
+//  3. a corner is closer to dR than `clearance` times its mean edge length;
+//  4. it is not certainly positively oriented, or overlaps another (folds of
+//     the input);
+//  5. a corner would be non-manifold (several fans) — repeated until none.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <queue>
+#include <span>
+#include <vector>
+
+#include "relgeo/joining/boundary_chains.h"
+#include "relgeo/joining/error_measures.h"
+#include "relgeo/kernel/point.h"
+#include "relgeo/mesh/mesh_topology.h"
+#include "relgeo/surfaces/trimmed_surface.h"
+
+namespace relgeo {
+
+/// Options of central_mesh.
+struct Central_mesh_options {
+  /// Rings of triangles around the mesh boundary removed (at least 1) [1].
+  int layers = 1;
+  /// Corners kept at least clearance x (their mean edge length in (u,v))
+  /// from dR [0.5].
+  double clearance = 0.5;
+};
+
+/// Which triangles form the central mesh, and why the others were removed.
+struct Central_mesh {
+  std::vector<char> keep;
+  std::size_t removed_periphery = 0, removed_outside = 0, removed_clearance = 0, removed_invalid = 0,
+              removed_non_manifold = 0;
+  std::size_t kept() const { return static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 1)); }
+};
+
+namespace internal {
+
+/// A uniform grid over the segments of closed loops, for proximity queries.
+class Segment_grid {
+ public:
+  struct Segment {
+    Point_2<double> a, b;
+  };
+  Segment_grid(const std::vector<std::vector<Point_2<double>>>& loops, double cell) {
+    for (const auto& l : loops)
+      for (std::size_t i = 0; i < l.size(); ++i) segments_.push_back({l[i], l[(i + 1) % l.size()]});
+    x0_ = y0_ = std::numeric_limits<double>::infinity();
+    double x1 = -x0_, y1 = -y0_;
+    for (const auto& s : segments_)
+      for (const auto& p : {s.a, s.b}) x0_ = std::min(x0_, p.x), y0_ = std::min(y0_, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+    cell_ = std::max(cell, 1e-12 * std::max(x1 - x0_, y1 - y0_));
+    nx_ = static_cast<std::size_t>(std::clamp((x1 - x0_) / cell_, 0.0, 4095.0)) + 1;
+    ny_ = static_cast<std::size_t>(std::clamp((y1 - y0_) / cell_, 0.0, 4095.0)) + 1;
+    cell_ = std::max((x1 - x0_) / static_cast<double>(nx_), (y1 - y0_) / static_cast<double>(ny_));
+    cell_ = std::max(cell_, 1e-300);
+    cells_.resize(nx_ * ny_);
+    for (std::uint32_t i = 0; i < segments_.size(); ++i) {
+      const auto& s = segments_[i];
+      for_cells(std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y), std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y),
+                [&](std::size_t c) { cells_[c].push_back(i); });
+    }
+  }
+  const std::vector<Segment>& segments() const { return segments_; }
+  /// Calls f(segment index) for segments whose cells meet the box (maybe twice).
+  template <class F>
+  void near_box(double x0, double y0, double x1, double y1, F&& f) const {
+    for_cells(x0, y0, x1, y1, [&](std::size_t c) {
+      for (std::uint32_t i : cells_[c]) f(i);
+    });
+  }
+  /// Distance from p to the loops if below r; otherwise >= r (infinity).
+  double distance_within(const Point_2<double>& p, double r) const {
+    double best = std::numeric_limits<double>::infinity();
+    near_box(p.x - r, p.y - r, p.x + r, p.y + r,
+             [&](std::uint32_t i) { best = std::min(best, distance_to_segment(p, segments_[i].a, segments_[i].b)); });
+    return best;
+  }
+
+ private:
+  template <class F>
+  void for_cells(double x0, double y0, double x1, double y1, F&& f) const {
+    const auto cx = [&](double x) {
+      return static_cast<std::size_t>(std::clamp((x - x0_) / cell_, 0.0, static_cast<double>(nx_ - 1)));
+    };
+    const auto cy = [&](double y) {
+      return static_cast<std::size_t>(std::clamp((y - y0_) / cell_, 0.0, static_cast<double>(ny_ - 1)));
+    };
+    for (std::size_t i = cx(x0); i <= cx(x1); ++i)
+      for (std::size_t j = cy(y0); j <= cy(y1); ++j) f(i * ny_ + j);
+  }
+  std::vector<Segment> segments_;
+  std::vector<std::vector<std::uint32_t>> cells_;
+  double x0_ = 0, y0_ = 0, cell_ = 1;
+  std::size_t nx_ = 1, ny_ = 1;
+};
+
+}  // namespace internal
+
+/// \brief The central mesh of a projected mesh patch (file comment).
+/// \param faces the patch's triangles, counter-clockwise in (u,v);
+/// \param uv the vertices' parameters; \param topology of `faces`;
+/// \param boundary dR: closed loops in (u,v) (outer and holes).
+template <class K>
+Central_mesh central_mesh(std::span<const Triangle> faces, std::span<const Point_2<double>> uv, const Mesh_topology& topology,
+                          const std::vector<std::vector<Point_2<double>>>& boundary, const Central_mesh_options& options = {},
+                          const K& k = K{}) {
+  const std::size_t nf = faces.size(), nv = uv.size();
+  Central_mesh c;
+  c.keep.assign(nf, 1);
+  const auto remove = [&](Index f, std::size_t& counter) {
+    if (c.keep[f]) c.keep[f] = 0, ++counter;
+  };
+  // Mean edge length per vertex.
+  std::vector<double> h(nv, 0.0);
+  std::vector<int> degree(nv, 0);
+  std::vector<double> lengths;
+  for (const Triangle& t : faces)
+    for (int i = 0; i < 3; ++i) {
+      const double l = std::hypot(uv[t[i]].x - uv[t[(i + 1) % 3]].x, uv[t[i]].y - uv[t[(i + 1) % 3]].y);
+      h[t[i]] += l, h[t[(i + 1) % 3]] += l, ++degree[t[i]], ++degree[t[(i + 1) % 3]];
+      lengths.push_back(l);
+    }
+  for (std::size_t v = 0; v < nv; ++v) h[v] = degree[v] ? h[v] / degree[v] : 0.0;
+  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
+  const double median = lengths.empty() ? 1.0 : lengths[lengths.size() / 2];
+
+  // 1. Rings around the mesh boundary.
+  std::vector<int> ring(nv, -1);
+  std::queue<Index> queue;
+  for (Index v = 0; v < nv; ++v)
+    if (!topology.is_isolated(v) && topology.is_boundary_vertex(v)) ring[v] = 0, queue.push(v);
+  while (!queue.empty()) {
+    const Index v = queue.front();
+    queue.pop();
+    if (ring[v] + 1 >= options.layers) continue;
+    for (Index w : topology.vertex_ring(v))
+      if (ring[w] < 0) ring[w] = ring[v] + 1, queue.push(w);
+  }
+  for (Index f = 0; f < nf; ++f)
+    for (Index v : faces[f])
+      if (ring[v] >= 0 && ring[v] < std::max(1, options.layers)) remove(f, c.removed_periphery);
+
+  // 2. Edges meeting dR; corners outside it.
+  const internal::Segment_grid grid(boundary, 2 * median);
+  std::vector<char> crossing(topology.number_of_edges(), 0);
+  for (Index e = 0; e < topology.number_of_edges(); ++e) {
+    const Edge ab = topology.edge_vertices(e);
+    const Point_2<double>&a = uv[ab.a], &b = uv[ab.b];
+    grid.near_box(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y), [&](std::uint32_t s) {
+      if (crossing[e]) return;
+      const auto hit = internal::segments_intersect(k, a, b, grid.segments()[s].a, grid.segments()[s].b);
+      if (!hit || *hit) crossing[e] = 1;
+    });
+  }
+  std::vector<Index> parent(nv);
+  std::iota(parent.begin(), parent.end(), Index{0});
+  const auto find = [&](Index v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (Index e = 0; e < topology.number_of_edges(); ++e)
+    if (!crossing[e]) {
+      const Edge ab = topology.edge_vertices(e);
+      parent[find(ab.a)] = find(ab.b);
+    }
+  std::vector<signed char> inside(nv, -1);  // per component root: 1 inside, 0 not (or undecided)
+  for (Index v = 0; v < nv; ++v) {
+    const Index r = find(v);
+    if (inside[r] >= 0) continue;
+    int winding = 0;
+    bool decided = true;
+    for (const auto& loop : boundary) {
+      const auto w = Trimmed_surface::winding_number(loop, uv[v], k);
+      if (!w || *w == Trimmed_surface::on_boundary_code) {
+        decided = false;
+        break;
+      }
+      winding += *w;
+    }
+    inside[r] = decided && winding != 0 ? 1 : 0;
+  }
+  for (Index f = 0; f < nf; ++f) {
+    bool out = false;
+    for (int i = 0; i < 3; ++i) {
+      out = out || inside[find(faces[f][i])] != 1;
+      const Index he = 3 * f + static_cast<Index>(i);
+      out = out || crossing[topology.edge(he)];
+    }
+    if (out) remove(f, c.removed_outside);
+  }
+
+  // 3. Clearance from dR.
+  for (Index f = 0; f < nf; ++f) {
+    if (!c.keep[f]) continue;
+    for (Index v : faces[f]) {
+      const double r = options.clearance * h[v];
+      if (grid.distance_within(uv[v], r) < r) {
+        remove(f, c.removed_clearance);
+        break;
+      }
+    }
+  }
+
+  // 4. Orientation and overlaps.
+  std::vector<Triangle> kept_faces;
+  std::vector<Index> kept_id;
+  for (Index f = 0; f < nf; ++f)
+    if (c.keep[f]) {
+      if (internal::uv_orientation(k, uv[faces[f][0]], uv[faces[f][1]], uv[faces[f][2]]) != Certified_sign::positive)
+        remove(f, c.removed_invalid);
+      else kept_faces.push_back(faces[f]), kept_id.push_back(f);
+    }
+  const Overlap_report overlaps = uv_overlaps<K>(kept_faces, uv, k);
+  for (const auto& list : {overlaps.overlapping, overlaps.undecided})
+    for (const auto& [a, b] : list) remove(kept_id[a], c.removed_invalid), remove(kept_id[b], c.removed_invalid);
+
+  // 5. Non-manifold corners: a vertex with more than two boundary edges of
+  // the kept set sits where several fans meet.
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<int> boundary_edges(nv, 0);
+    for (Index e = 0; e < topology.number_of_edges(); ++e) {
+      const Index h0 = topology.edge_halfedge(e), h1 = topology.opposite(h0);
+      const int kept = c.keep[Mesh_topology::face(h0)] + (h1 == invalid_index ? 0 : c.keep[Mesh_topology::face(h1)]);
+      if (kept == 1) {
+        const Edge ab = topology.edge_vertices(e);
+        ++boundary_edges[ab.a], ++boundary_edges[ab.b];
+      }
+    }
+    for (Index f = 0; f < nf; ++f) {
+      if (!c.keep[f]) continue;
+      for (Index v : faces[f])
+        if (boundary_edges[v] > 2) {
+          remove(f, c.removed_non_manifold);
+          changed = true;
+          break;
+        }
+    }
+  }
+  return c;
+}
+
+}  // namespace relgeo

@@ -1,0 +1,162 @@
+// relgeo/joining/join_command.h — joining from files to a file and a report:
+// what `relgeo join` runs (SPEC Sec. 8), so that a command is a thin layer
+// (parse options, call run_join, print to_json(report), exit by its status).
+//
+//   relgeo join --surface S.step|S.iges|S.json --mesh A.off [--mesh B.off]
+//               [--curve C.json] --output J.off [--report R.json]
+//               [--method whitney|naive|occt] [--kernel failsafe|interval|filtered|exact]
+//
+// Needs CGAL, Eigen and relgeo::io (nlohmann-json); STEP/IGES input and the
+// occt method need relgeo::occt (RELGEO_HAS_OCCT); without it they are
+// Invalid_input.
+#pragma once
+
+#include <filesystem>
+#include <limits>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "relgeo/core/errors.h"
+#include "relgeo/joining/join_report_json.h"
+#include "relgeo/joining/joiner.h"
+#include "relgeo/joining/naive_sewing.h"
+#include "relgeo/kernel.h"
+#include "relgeo/mesh/mesh_io.h"
+#include "relgeo/surfaces/surface_json.h"
+#ifdef RELGEO_HAS_OCCT
+#include "relgeo/joining/occt_sewing.h"
+#include "relgeo/surfaces/occt_io.h"
+#endif
+
+namespace relgeo {
+
+/// What run_join reads, how it joins, where it writes.
+struct Join_command_options {
+  /// The faces: .step/.stp/.iges/.igs (OpenCASCADE) or .json (surface_json.h).
+  std::string surface;
+  /// One mesh patch per face, in the model's face order (.off/.obj/.ply/.stl).
+  std::vector<std::string> meshes;
+  /// Files giving edges their 3D curves (read_edge_curves_json); optional.
+  std::vector<std::string> curves;
+  /// The joined mesh (.off/.obj/.ply/.stl); empty: not written.
+  std::string output;
+  /// whitney (thesis Sec. 4.3), naive (Sec. 4.1) or occt (OpenCASCADE's
+  /// sewing and meshing of the faces; the meshes are only measured).
+  std::string method = "whitney";
+  /// Kernel of the certified checks: failsafe, interval, filtered, exact.
+  std::string kernel = "filtered";
+  Join_options join{};
+  /// Error criteria: a result with a face whose absolute error or
+  /// normal-vector error (after joining) exceeds them is "failed" [none].
+  double max_absolute_error = std::numeric_limits<double>::infinity();
+  double max_normal_error = std::numeric_limits<double>::infinity();
+#ifdef RELGEO_HAS_OCCT
+  Occt_sewing_options occt{};
+#endif
+};
+
+/// run_join's answer: the joining report, and whether the result is valid.
+struct Join_command_report {
+  /// "ok": conforming, watertight seams, no flipped, degenerate or
+  /// overlapping triangle in any face's (u,v) domain; "failed" otherwise
+  /// (naive sewing on a folding input, for instance), or an error above the
+/// criteria of the options: `failure` says why.
+  std::string status = "ok";
+  std::string failure;
+  std::string surface, output;
+  std::vector<std::string> meshes;
+  std::size_t faces = 0;
+  Join_report report;
+  /// The joined mesh (also written to `output` when given) and the model
+  /// face of each of its triangles.
+  Triangle_mesh<Point_3<double>> mesh;
+  std::vector<Index> face_of_triangle;
+  /// The surface model as joined (edge curves from `curves` included).
+  Surface_model model;
+};
+
+/// Reads the surface model of a file (by extension). \throws Unreadable_file,
+/// Invalid_input (STEP/IGES without relgeo::occt).
+inline Surface_model read_surface_model(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".json") return read_surface_model_json(path);
+#ifdef RELGEO_HAS_OCCT
+  return read_cad_model(path);
+#else
+  throw Invalid_input("'" + path + "': STEP/IGES input needs relgeo built with OpenCASCADE (relgeo::occt)");
+#endif
+}
+
+/// \brief Joining with kernel K (the firewall: a tool can instantiate each
+/// kernel in its own translation unit). See run_join.
+template <class K>
+Join_command_report run_join_with(const Join_command_options& o) {
+  Join_command_report r;
+  r.surface = o.surface, r.output = o.output, r.meshes = o.meshes;
+  Surface_model model = read_surface_model(o.surface);
+  for (const std::string& c : o.curves) read_edge_curves_json(c, model);
+  std::vector<Triangle_mesh<Point_3<double>>> meshes;
+  for (const std::string& m : o.meshes) meshes.push_back(read_mesh(m, {.triangulate_polygons = true}));
+  r.faces = model.faces.size();
+  Join_result result;
+  if (o.method == "whitney") {
+    result = join_meshes<K>(model, meshes, o.join);
+  } else if (o.method == "naive") {
+    result = naive_sewing<K>(model, meshes, o.join);
+  } else if (o.method == "occt") {
+#ifdef RELGEO_HAS_OCCT
+    result = occt_sewing<K>(model, meshes, o.occt);
+#else
+    throw Invalid_input("method occt needs relgeo built with OpenCASCADE (relgeo::occt)");
+#endif
+  } else {
+    throw Invalid_input("unknown joining method '" + o.method + "' (whitney, naive or occt)");
+  }
+  r.report = std::move(result.report);
+  r.mesh = std::move(result.mesh);
+  r.face_of_triangle = std::move(result.face_of_triangle);
+  r.model = std::move(model);
+  const auto fail = [&](const std::string& why) {
+    if (r.status == "ok") r.status = "failed", r.failure = why;
+  };
+  if (!r.report.conforming) fail("non-conforming");
+  if (!r.report.watertight_seams) fail("open-seam");
+  for (const Join_face_report& f : r.report.faces) {
+    if (f.orientation_after.flipped) fail("flipped-triangles");
+    if (f.orientation_after.degenerate) fail("degenerate-triangles");
+    if (f.overlaps_after) fail("overlapping-triangles");
+    if (f.orientation_after.undecided || f.overlaps_undecided_after) fail("undecided");
+    if (f.after.absolute > o.max_absolute_error) fail("absolute-error");
+    if (f.after.normal_vector > o.max_normal_error) fail("normal-vector-error");
+  }
+  if (!o.output.empty()) write_mesh(o.output, r.mesh);
+  return r;
+}
+
+/// \brief Reads the model and the meshes, joins them with the method and
+/// kernel named in `o`, writes the result, returns the report.
+/// \throws relgeo::Error: Unreadable_file and the other Invalid_input kinds
+/// for bad input (exit 2), Joining_failure when a step fails (exit 1).
+inline Join_command_report run_join(const Join_command_options& o) {
+  if (o.kernel == "failsafe") return run_join_with<Failsafe_kernel<double>>(o);
+  if (o.kernel == "interval") return run_join_with<Interval_kernel>(o);
+  if (o.kernel == "filtered") return run_join_with<Filtered_exact_kernel>(o);
+  if (o.kernel == "exact") return run_join_with<Exact_kernel>(o);
+  throw Invalid_input("unknown kernel '" + o.kernel + "' for joining (failsafe, interval, filtered or exact)");
+}
+
+/// The command's JSON output.
+inline io::Json to_json(const Join_command_report& r) {
+  io::Json j = to_json(r.report);
+  j["status"] = r.status;
+  j["failure"] = r.failure.empty() ? io::Json(nullptr) : io::Json(r.failure);
+  j["surface"] = r.surface;
+  j["meshes"] = r.meshes;
+  j["output"] = r.output;
+  j["face_count"] = r.faces;
+  return j;
+}
+
+}  // namespace relgeo

@@ -1,0 +1,432 @@
+// relgeo/mesh/solid_validation.h — the validation report of a triangle mesh
+// as the boundary of a solid (thesis Sec. 5.4.2): every check with its
+// status (pass, fail, undecided, not checked), where it fails (capped lists
+// of faces, edges, vertices or face pairs, with the full count) and, where
+// it means something, by what margin (the volume); plus Euler
+// characteristic, components, genus and the exact signed volume.
+//
+// It wraps what exists: check_mesh (validity.h) finds the combinatorial
+// defects, find_self_intersections (self_intersection.h) the exact
+// self-intersections, both under the caller's kernel; this header adds the
+// volume (internal/exact_volume.h: exact for double and rational
+// coordinates), the topology (internal/mesh_components.h) and the
+// orientation test (internal/component_winding.h: every component's volume
+// sign against its nesting, decided exactly). The report is a plain
+// aggregate (strings, numbers, vectors) so that the tool can print it as
+// JSON field by field.
+//
+// What depends on what: the geometric checks (degenerate faces beyond a
+// repeated index, self-intersection, volume, orientation) need valid
+// indices and finite coordinates; the orientation test needs a closed,
+// manifold, consistently oriented, non-degenerate mesh without
+// self-intersection; the genus a closed, manifold, consistently oriented
+// one. A check whose preconditions fail is `not_checked`, and its note says
+// why.
+#pragma once
+
+#include <gmpxx.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "relgeo/core/certified_sign.h"
+#include "relgeo/mesh/face_bvh.h"
+#include "relgeo/mesh/internal/component_winding.h"
+#include "relgeo/mesh/internal/exact_volume.h"
+#include "relgeo/mesh/internal/kernel_points.h"
+#include "relgeo/mesh/internal/mesh_components.h"
+#include "relgeo/mesh/mesh_errors.h"
+#include "relgeo/mesh/self_intersection.h"
+#include "relgeo/mesh/triangle_mesh.h"
+#include "relgeo/mesh/validity.h"
+
+namespace relgeo {
+
+/// The outcome of one check.
+enum class Check_status : std::uint8_t {
+  pass,        ///< checked: no defect
+  fail,        ///< checked: defects found (listed)
+  undecided,   ///< the kernel could not decide some cases (listed), none failed
+  not_checked  ///< not run: turned off, or its preconditions failed (see the note)
+};
+
+constexpr std::string_view to_string(Check_status s) noexcept {
+  switch (s) {
+    case Check_status::pass: return "pass";
+    case Check_status::fail: return "fail";
+    case Check_status::undecided: return "undecided";
+    case Check_status::not_checked: return "not_checked";
+  }
+  return "unknown";
+}
+
+/// One check of the report.
+struct Solid_check {
+  Check_status status = Check_status::not_checked;
+  /// Offending elements found (all of them; 0 when passed).
+  std::size_t count = 0;
+  /// The first Solid_validation_options::max_listed of them (Mesh_issue:
+  /// the defect and its elements, as Mesh_defect documents).
+  std::vector<Mesh_issue> where;
+  /// Why not checked, or what was left out.
+  std::string note;
+
+  bool passed() const { return status == Check_status::pass; }
+};
+
+/// One connected component (faces connected through shared vertices).
+struct Solid_component {
+  Index first_face = 0;
+  std::size_t vertices = 0, edges = 0, faces = 0;
+  long long euler_characteristic = 0;
+  /// (2 - euler_characteristic) / 2 when the mesh is a closed, manifold,
+  /// consistently oriented surface.
+  std::optional<long long> genus;
+  /// Its signed volume, nearest double of the exact value (of the
+  /// enclosure's midpoint when not exact); NaN when not computed.
+  double volume = std::numeric_limits<double>::quiet_NaN();
+  /// The winding number of all other components around it (see
+  /// internal/component_winding.h); empty when not computed or undecided.
+  std::optional<int> winding;
+};
+
+/// The signed volume (1/6 sum of det(a, b, c) over the faces; the volume
+/// enclosed for a closed mesh, positive when outward oriented).
+struct Solid_volume {
+  bool computed = false;
+  /// `value` is the nearest double to the exact volume of the coordinates
+  /// (double, rational, MPFR input); false: an enclosure (intervals).
+  bool exact = false;
+  double value = std::numeric_limits<double>::quiet_NaN();
+  /// Bounds of the exact volume (equal to `value` or one rounding apart
+  /// when exact).
+  double lower = std::numeric_limits<double>::quiet_NaN();
+  double upper = std::numeric_limits<double>::quiet_NaN();
+  /// The exact value as "numerator/denominator" (empty when not exact).
+  std::string exact_value;
+};
+
+/// Options of validate_solid.
+struct Solid_validation_options {
+  /// What check_mesh looks at (require_closed, report_isolated_vertices;
+  /// check_collinear_faces is ignored: degenerate faces are always found,
+  /// under the report's kernel, since the self-intersection test must skip
+  /// them).
+  Mesh_check_options mesh{};
+  bool check_self_intersections = true;
+  /// The orientation test (needs the self-intersection test).
+  bool check_orientation = true;
+  /// The exact volume string (can be long: disable for huge meshes).
+  bool exact_volume_string = true;
+  /// Most entries in each `where` list and in `component_list`.
+  std::size_t max_listed = 100;
+  /// Threads for the self-intersection test (1: serial; 0: all; TBB only).
+  int threads = 1;
+};
+
+/// The validation report (file comment). Every field is plain data.
+struct Solid_report {
+  std::string kernel;  ///< the kernel that decided the geometric checks
+  std::size_t vertices = 0, faces = 0;
+  std::optional<std::size_t> edges;  ///< distinct vertex pairs of faces
+
+  Solid_check valid_indices;          ///< index_out_of_range
+  Solid_check finite_coordinates;     ///< non_finite_coordinate
+  Solid_check non_degenerate_faces;   ///< repeated_vertex_in_face, collinear_face, undecided {face}
+  Solid_check no_isolated_vertices;   ///< isolated_vertex
+  Solid_check valid_tags;             ///< invalid_tag
+  Solid_check closed;                 ///< boundary_edge
+  Solid_check edge_manifold;          ///< non_manifold_edge
+  Solid_check vertex_manifold;        ///< non_manifold_vertex
+  Solid_check consistently_oriented;  ///< inconsistent_orientation
+  Solid_check self_intersection_free; ///< self_intersection, undecided {face, face} / {face}
+  /// The mesh is the outward boundary of a solid: each component's volume
+  /// sign agrees with its nesting (misoriented_component); for one
+  /// component: signed volume > 0.
+  Solid_check outward_oriented;
+
+  std::optional<long long> euler_characteristic;  ///< V - E + F (V: vertices used by faces)
+  std::size_t components = 0;
+  std::optional<long long> genus;  ///< sum over components, when defined
+  Solid_volume volume;
+  std::vector<Solid_component> component_list;  ///< the first max_listed components
+  /// Pairs of faces whose boxes overlap (the self-intersection test's work).
+  std::size_t candidate_pairs = 0;
+  /// The kernel's points are the coordinates exactly (false: rounded to its
+  /// number type first; the geometric checks are about the rounded mesh).
+  bool coordinates_exact = true;
+
+  /// f(name, check) for the eleven checks, in the order above.
+  template <class F>
+  void for_each_check(F&& f) const {
+    f("valid_indices", valid_indices), f("finite_coordinates", finite_coordinates);
+    f("non_degenerate_faces", non_degenerate_faces), f("no_isolated_vertices", no_isolated_vertices);
+    f("valid_tags", valid_tags), f("closed", closed), f("edge_manifold", edge_manifold);
+    f("vertex_manifold", vertex_manifold), f("consistently_oriented", consistently_oriented);
+    f("self_intersection_free", self_intersection_free), f("outward_oriented", outward_oriented);
+  }
+  /// Every check passed: a valid solid.
+  bool is_valid_solid() const {
+    bool ok = true;
+    for_each_check([&](std::string_view, const Solid_check& c) { ok = ok && c.passed(); });
+    return ok;
+  }
+  /// The listed issues of every check (for Invalid_mesh).
+  std::vector<Mesh_issue> issues() const {
+    std::vector<Mesh_issue> all;
+    for_each_check([&](std::string_view, const Solid_check& c) { all.insert(all.end(), c.where.begin(), c.where.end()); });
+    return all;
+  }
+  /// One line: "valid solid" or each check that did not pass with its count.
+  std::string summary() const {
+    std::string s;
+    for_each_check([&](std::string_view name, const Solid_check& c) {
+      if (c.passed()) return;
+      s += (s.empty() ? "" : ", ") + std::string(name) + " " + std::string(to_string(c.status));
+      if (c.count) s += " (" + std::to_string(c.count) + ")";
+    });
+    return s.empty() ? "valid solid" : s;
+  }
+};
+
+namespace internal {
+
+inline void record(Solid_check& c, const Mesh_issue& i, std::size_t cap) {
+  ++c.count;
+  if (c.where.size() < cap) c.where.push_back(i);
+}
+inline void conclude(Solid_check& c, bool undecided = false) {
+  c.status = c.count == 0 ? Check_status::pass : (undecided ? Check_status::undecided : Check_status::fail);
+}
+inline void not_checked(Solid_check& c, std::string why) {
+  c = Solid_check{};
+  c.note = std::move(why);
+}
+
+// check_mesh's issues sorted into the report's checks.
+inline void sort_mesh_issues(const Mesh_report& mr, const Solid_validation_options& o, Solid_report& r) {
+  const std::size_t cap = o.max_listed;
+  for (const Mesh_issue& i : mr.issues) {
+    switch (i.defect) {
+      case Mesh_defect::index_out_of_range: record(r.valid_indices, i, cap); break;
+      case Mesh_defect::non_finite_coordinate: record(r.finite_coordinates, i, cap); break;
+      case Mesh_defect::repeated_vertex_in_face: record(r.non_degenerate_faces, i, cap); break;
+      case Mesh_defect::isolated_vertex: record(r.no_isolated_vertices, i, cap); break;
+      case Mesh_defect::invalid_tag: record(r.valid_tags, i, cap); break;
+      case Mesh_defect::boundary_edge: record(r.closed, i, cap); break;
+      case Mesh_defect::non_manifold_edge: record(r.edge_manifold, i, cap); break;
+      case Mesh_defect::non_manifold_vertex: record(r.vertex_manifold, i, cap); break;
+      case Mesh_defect::inconsistent_orientation: record(r.consistently_oriented, i, cap); break;
+      default: break;  // geometric defects: not asked of check_mesh
+    }
+  }
+  for (Solid_check* c : {&r.valid_indices, &r.finite_coordinates, &r.valid_tags, &r.edge_manifold,
+                         &r.vertex_manifold, &r.consistently_oriented})
+    conclude(*c);
+  if (o.mesh.report_isolated_vertices) conclude(r.no_isolated_vertices);
+  else not_checked(r.no_isolated_vertices, "turned off (Mesh_check_options::report_isolated_vertices)");
+  if (o.mesh.require_closed) conclude(r.closed);
+  else not_checked(r.closed, "turned off (Mesh_check_options::require_closed)");
+}
+
+// Components, Euler characteristic, genus. \pre valid indices.
+template <class P>
+Face_components report_topology(const Triangle_mesh<P>& m, const Solid_validation_options& o, Solid_report& r) {
+  Face_components comps = face_components(m.faces, m.vertices.size());
+  const std::vector<Euler_counts> counts = euler_counts(m.faces, m.vertices.size(), comps);
+  const bool surface = r.closed.passed() && r.edge_manifold.passed() && r.vertex_manifold.passed() &&
+                       r.consistently_oriented.passed() && r.non_degenerate_faces.count == 0;
+  Euler_counts all;
+  long long genus = 0;
+  for (std::size_t c = 0; c < comps.size(); ++c) {
+    all.vertices += counts[c].vertices, all.edges += counts[c].edges, all.faces += counts[c].faces;
+    genus += (2 - counts[c].characteristic()) / 2;
+    if (r.component_list.size() < o.max_listed) {
+      Solid_component sc;
+      sc.first_face = comps.first_face[c];
+      sc.vertices = counts[c].vertices, sc.edges = counts[c].edges, sc.faces = counts[c].faces;
+      sc.euler_characteristic = counts[c].characteristic();
+      if (surface) sc.genus = (2 - sc.euler_characteristic) / 2;
+      r.component_list.push_back(sc);
+    }
+  }
+  r.components = comps.size();
+  r.edges = all.edges;
+  r.euler_characteristic = all.characteristic();
+  if (surface) r.genus = genus;
+  return comps;
+}
+
+template <class P>
+Signed_volumes report_volume(const Triangle_mesh<P>& m, const Face_components& comps,
+                             const Solid_validation_options& o, Solid_report& r) {
+  Signed_volumes v = signed_volumes(m, comps.component, comps.size(), r.component_list.size());
+  r.volume.computed = true;
+  r.volume.exact = v.exact;
+  r.volume.lower = v.total_lower, r.volume.upper = v.total_upper;
+  if (v.exact) {
+    r.volume.value = round_rational<double>(v.total, Rounding::to_nearest);
+    if (o.exact_volume_string) r.volume.exact_value = v.total.get_str();
+  } else {
+    r.volume.value = 0.5 * v.total_lower + 0.5 * v.total_upper;
+  }
+  for (std::size_t c = 0; c < r.component_list.size(); ++c) r.component_list[c].volume = v.value[c];
+  return v;
+}
+
+// The orientation test (internal/component_winding.h).
+template <class K, class P, class Points>
+void report_orientation(const K& k, const Triangle_mesh<P>& m, const Points& point, const Face_bvh& bvh,
+                        const Face_components& comps, const Signed_volumes& v, const Solid_validation_options& o,
+                        Solid_report& r) {
+  const std::vector<std::optional<int>> winding = component_windings(k, m, point, bvh, comps);
+  bool undecided = false;
+  for (std::size_t c = 0; c < comps.size(); ++c) {
+    if (c < r.component_list.size()) r.component_list[c].winding = winding[c];
+    const Certified_sign s = v.sign[c];
+    if (!winding[c] || !is_certain(s)) {
+      undecided = true;
+      record(r.outward_oriented, {Mesh_defect::undecided, {comps.first_face[c], static_cast<Index>(c)}},
+             o.max_listed);
+      continue;
+    }
+    const bool shell = *winding[c] == 0 && s == Certified_sign::positive;
+    const bool cavity = *winding[c] == 1 && s == Certified_sign::negative;
+    if (!shell && !cavity)
+      record(r.outward_oriented, {Mesh_defect::misoriented_component, {comps.first_face[c], static_cast<Index>(c)}},
+             o.max_listed);
+  }
+  // Failures first: undecided only when nothing failed.
+  bool failed = false;
+  for (const Mesh_issue& i : r.outward_oriented.where) failed = failed || i.defect == Mesh_defect::misoriented_component;
+  conclude(r.outward_oriented, undecided && !failed);
+}
+
+}  // namespace internal
+
+/// \brief The validation report of `m` as the boundary of a solid, under
+/// kernel K (by default Default_self_intersection_kernel<P>: exact
+/// predicates — Filtered_exact_kernel on double coordinates, Exact_kernel on
+/// rationals; any relgeo or CGAL-adapter kernel works, a fail-safe or
+/// interval kernel reports `undecided` where it cannot decide, never a
+/// wrong pass or fail).
+///
+/// Never throws for bad input (every defect is reported); works on any
+/// triangle soup. Complexity O(n log n + k) for n faces and k pairs of
+/// overlapping face boxes, plus one segment query per component when there
+/// are several.
+template <class K, class P>
+Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_validation_options& o = {}) {
+  Solid_report r;
+  r.kernel = K::name();
+  r.vertices = m.vertices.size(), r.faces = m.faces.size();
+  // check_mesh's checks but the collinearity test, decided below under K on
+  // K's points (with the degenerate faces the self-intersection test skips).
+  const Mesh_report mr = internal::combinatorial_mesh_report(m, o.mesh);
+  internal::sort_mesh_issues(mr, o, r);
+
+  const bool indices_ok = r.valid_indices.passed();
+  const bool finite = r.finite_coordinates.passed();
+  if (!indices_ok || !finite) {
+    const std::string why = !indices_ok ? "indices out of range" : "non-finite coordinates";
+    internal::conclude(r.non_degenerate_faces);
+    r.non_degenerate_faces.note = "collinearity not checked: " + why;
+    internal::not_checked(r.self_intersection_free, why);
+    internal::not_checked(r.outward_oriented, why);
+    if (indices_ok) (void)internal::report_topology(m, o, r);
+    return r;
+  }
+  // Degenerate faces under K (repeated indices are already recorded).
+  const internal::Kernel_points<K, P> point(m.vertices, k);
+  r.coordinates_exact = point.exact();
+  const std::vector<unsigned char> skip = internal::degenerate_face_flags(k, point, m.faces);
+  bool undecided_face = false;
+  for (Index f = 0; f < skip.size(); ++f) {
+    const Triangle& t = m.faces[f];
+    const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+    if (skip[f] == 1 && !repeated) internal::record(r.non_degenerate_faces, {Mesh_defect::collinear_face, {f, invalid_index}}, o.max_listed);
+    if (skip[f] == 2) {
+      internal::record(r.non_degenerate_faces, {Mesh_defect::undecided, {f, invalid_index}}, o.max_listed);
+      undecided_face = true;
+    }
+  }
+  {
+    bool failed = false;
+    for (const Mesh_issue& i : r.non_degenerate_faces.where) failed = failed || i.defect != Mesh_defect::undecided;
+    internal::conclude(r.non_degenerate_faces, undecided_face && !failed);
+  }
+
+  const internal::Face_components comps = internal::report_topology(m, o, r);
+  const internal::Signed_volumes volumes = internal::report_volume(m, comps, o, r);
+
+  if (!o.check_self_intersections) {
+    internal::not_checked(r.self_intersection_free, "turned off (Solid_validation_options::check_self_intersections)");
+    internal::not_checked(r.outward_oriented, "needs the self-intersection test");
+    return r;
+  }
+  const Face_bvh bvh(m, {.threads = o.threads});
+  Self_intersections si;
+  internal::find_self_intersections(k, point, m.faces, skip, bvh, o.threads, si);
+  r.candidate_pairs = si.candidate_pairs;
+  for (const Face_pair& p : si.pairs)
+    internal::record(r.self_intersection_free, {Mesh_defect::self_intersection, {p.first, p.second}}, o.max_listed);
+  for (const Face_pair& p : si.undecided)
+    internal::record(r.self_intersection_free, {Mesh_defect::undecided, {p.first, p.second}}, o.max_listed);
+  internal::conclude(r.self_intersection_free, si.pairs.empty());
+  const std::size_t untested = r.non_degenerate_faces.count;
+  if (untested) r.self_intersection_free.note = std::to_string(untested) + " degenerate or undecided faces not tested";
+  if (undecided_face && r.self_intersection_free.passed()) r.self_intersection_free.status = Check_status::undecided;
+
+  if (!o.check_orientation) {
+    internal::not_checked(r.outward_oriented, "turned off (Solid_validation_options::check_orientation)");
+    return r;
+  }
+  std::string missing;
+  const auto need = [&](const Solid_check& c, const char* name) {
+    if (!c.passed()) missing += (missing.empty() ? "" : ", ") + std::string(name);
+  };
+  need(r.closed, "closed"), need(r.edge_manifold, "edge_manifold"), need(r.vertex_manifold, "vertex_manifold");
+  need(r.consistently_oriented, "consistently_oriented"), need(r.non_degenerate_faces, "non_degenerate_faces");
+  need(r.self_intersection_free, "self_intersection_free");
+  if (!missing.empty()) {
+    internal::not_checked(r.outward_oriented, "needs " + missing);
+    return r;
+  }
+  if (m.faces.empty()) {
+    internal::not_checked(r.outward_oriented, "no faces: no solid");
+    return r;
+  }
+  internal::report_orientation(k, m, point, bvh, comps, volumes, o, r);
+  return r;
+}
+
+/// validate_solid with K's default object (K: by default
+/// Default_self_intersection_kernel<P>).
+template <class K = void, class P>
+Solid_report validate_solid(const Triangle_mesh<P>& m, const Solid_validation_options& o = {}) {
+  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_self_intersection_kernel<P>::type, K>;
+  return validate_solid(m, Kernel{}, o);
+}
+
+/// \throws Invalid_mesh naming every listed defect (context: the caller)
+/// unless validate_solid finds a valid solid (every check passes; an
+/// undecided check refuses too).
+template <class K = void, class P>
+void require_valid_solid(const Triangle_mesh<P>& m, const Solid_validation_options& o = {},
+                         const std::string& context = "require_valid_solid") {
+  const Solid_report r = validate_solid<K>(m, o);
+  if (r.is_valid_solid()) return;
+  std::vector<Mesh_issue> issues = r.issues();
+  if (issues.empty()) issues.push_back({Mesh_defect::undecided, {invalid_index, invalid_index}});  // a not-checked check
+  throw Invalid_mesh(context + " (" + r.summary() + ")", std::move(issues));
+}
+
+}  // namespace relgeo

@@ -1,0 +1,190 @@
+// tools/relgeo/commands/join/command.cpp — `relgeo join`: mesh patches joined
+// to the trimmed faces of a surface model (thesis Ch. 4): the Whitney joiner,
+// naive midpoint sewing or OpenCASCADE's sewing, the joined mesh written, the
+// errors before and after and the certified flip counts reported.
+#include "commands/join/command.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <ostream>
+#include <sstream>
+
+#include "commands/join/facade.h"
+#include "commands/join/picture.h"
+#include "relgeo/io/json.h"
+#include "relgeo/io/text_file.h"
+#include "kernels/registry.h"
+#include "relgeo/joining/joining_errors.h"
+
+namespace relgeo::tool {
+
+namespace {
+
+using io::Json;
+
+std::string g3(double v) { return measure_text(v, 3); }
+
+/// The largest value of a face measure over the faces.
+template <class F>
+double largest(const Join_report& r, F&& of) {
+  double m = 0;
+  for (const Join_face_report& f : r.faces) m = std::max(m, of(f));
+  return m;
+}
+template <class F>
+std::size_t total(const Join_report& r, F&& of) {
+  std::size_t n = 0;
+  for (const Join_face_report& f : r.faces) n += of(f);
+  return n;
+}
+
+/// Usage errors of the options (the library checks the files).
+void check_options(const Join_tool_options& o) {
+  if (o.surface.empty())
+    throw Usage_error("no surface file: give it as 'relgeo join SURFACE --mesh A.off ...' or --surface FILE");
+  if (o.meshes.empty()) throw Usage_error("no mesh: give one --mesh FILE per face of the surface model, in face order");
+  if (o.method != "whitney" && o.method != "naive" && o.method != "occt")
+    throw Usage_error("--method must be whitney, naive or occt (got '" + o.method + "')");
+  validate_join_kernel(o.kernel);
+  if (!(o.max_absolute_error >= 0)) throw Usage_error("--max-absolute-error must be a number >= 0");
+  if (!(o.max_normal_error >= 0)) throw Usage_error("--max-normal-error must be a number >= 0");
+  if (o.layers < 1 || o.layers > 8) throw Usage_error("--layers must be in 1..8");
+  if (o.min_angle != 0 && !(o.min_angle > 0 && o.min_angle <= 30))
+    throw Usage_error("--min-angle must be in (0, 30] degrees (Ruppert's refinement terminates up to about 30)");
+  if (!(o.slope_margin >= 0 && o.slope_margin <= 1)) throw Usage_error("--slope-margin must be in [0, 1]");
+  if (!(o.extrapolation >= 0 && o.extrapolation <= 0.5)) throw Usage_error("--extrapolation must be in [0, 0.5]");
+}
+
+/// Runs the library; its typed errors come back with the step they belong to.
+Join_tool_result run_or_explain(const Join_tool_options& o, const std::string& output, bool pictures) {
+  try {
+    return run_join_tool(o, output, pictures);
+  } catch (const Projection_error& e) {
+    throw Projection_error(e.failure(),
+                           "a mesh does not project onto its face (" + std::string(to_string(e.failure())) + "): " + e.what(),
+                           e.index());
+  } catch (const Joining_input_error& e) {
+    throw Joining_input_error(std::string("the meshes do not fit the surface model: ") + e.what());
+  }
+}
+
+Json summary_json(const Join_report& r) {
+  Json s;
+  s["absolute_error_before"] = io::json_measure(largest(r, [](const auto& f) { return f.before.absolute; }));
+  s["absolute_error_after"] = io::json_measure(largest(r, [](const auto& f) { return f.after.absolute; }));
+  s["normal_vector_error_before"] = io::json_measure(largest(r, [](const auto& f) { return f.before.normal_vector; }));
+  s["normal_vector_error_after"] = io::json_measure(largest(r, [](const auto& f) { return f.after.normal_vector; }));
+  s["flipped_before"] = total(r, [](const auto& f) { return f.orientation_before.flipped; });
+  s["flipped_after"] = total(r, [](const auto& f) { return f.orientation_after.flipped; });
+  s["overlaps_after"] = total(r, [](const auto& f) { return f.overlaps_after; });
+  return s;
+}
+
+std::string text_report(const Join_tool_options& o, const std::string& output, const Join_tool_result& res) {
+  const Join_report& r = res.report;
+  std::ostringstream s;
+  Key_value_text kv(18);
+  kv.add("surface", o.surface + " (" + std::to_string(res.faces) + " face(s); edges: " +
+                        std::to_string(r.edges_with_curve) + " with curve, " + std::to_string(r.edges_with_median) +
+                        " median, " + std::to_string(r.free_edges) + " free)");
+  std::string meshes;
+  for (const auto& m : o.meshes) meshes += (meshes.empty() ? "" : ", ") + m;
+  kv.add("meshes", meshes);
+  kv.add("method", o.method + ", kernel " + o.kernel + " (" + res.kernel_model + ")");
+  kv.add("output", std::to_string(r.vertices) + " vertices, " + std::to_string(r.triangles) + " triangles -> " + output);
+  s << kv.str() << "\n";
+  Text_table t({"face", "abs before", "abs after", "nve before", "nve after", "M", "L", "flipped before",
+                "flipped after", "overlaps", "guarantees"});
+  for (std::size_t f = 0; f < r.faces.size(); ++f) {
+    const Join_face_report& x = r.faces[f];
+    t.add_row({std::to_string(f), g3(x.before.absolute), g3(x.after.absolute), g3(x.before.normal_vector),
+               g3(x.after.normal_vector), g3(x.boundary_max_abs_height), g3(x.lipschitz_constant),
+               std::to_string(x.orientation_before.flipped), std::to_string(x.orientation_after.flipped),
+               std::to_string(x.overlaps_after), x.guarantees_hold ? "hold" : "-"});
+  }
+  s << t.str() << "\n";
+  Key_value_text tail(18);
+  tail.add("seams", std::string(r.watertight_seams ? "watertight" : "open") + " (" +
+                        std::to_string(r.seam_boundary_edges) + " boundary edges on seams), " +
+                        (r.conforming ? "conforming" : "not conforming"));
+  tail.add("smallest angle", g3(r.min_angle_3d) + " degrees (3D)");
+  tail.add("time", duration_text(r.total_seconds));
+  if (!o.svg.empty()) tail.add("picture", o.svg);
+  tail.add("status", res.status + (res.failure.empty() ? "" : " (" + res.failure + ")"));
+  s << tail.str();
+  return s.str();
+}
+
+}  // namespace
+
+std::string default_join_output(const Join_tool_options& o) {
+  return std::filesystem::path(o.surface).stem().string() + "_joined.off";
+}
+
+std::string join_help_footer() {
+  std::string kernels;
+  for (const auto& k : join_kernel_names()) kernels += (kernels.empty() ? "" : ", ") + k;
+  return "Input: a surface model (a JSON relgeo-surface-model, doc/joining.md; STEP or IGES when relgeo is built "
+         "with OpenCASCADE) and one mesh patch per trimmed face, in face order (--mesh, repeated). Edges of the "
+         "model with a 3D curve are joined along it (thesis case 1), the others along the median of the two "
+         "meshes' boundaries (case 2); --curve adds edge curves from a JSON file.\n"
+         "Methods: whitney (the thesis' joiner: central meshes, Ruppert-refined external regions, Whitney "
+         "reprojection: |a| <= M and slope <= L on every face, no fold), naive (midpoint sewing of the "
+         "boundaries, the baseline that folds), occt (OpenCASCADE's sewing and meshing of the faces).\n"
+         "Measures per face: absolute error (largest |height| over the face) and normal-vector error (largest "
+         "slope of the height field between two corners of a triangle), before (the input) and after (the "
+         "result); M and L of the boundary data; flipped triangles and overlaps in (u,v), certified by the "
+         "kernel (" + kernels + ").\n"
+         "Criteria: --max-absolute-error and --max-normal-error make a result whose error exceeds them on a "
+         "face 'failed'.\n"
+         "JSON fields: command, kernel, kernel_model, surface, meshes, output, method, faces [{before "
+         "{absolute, normal_vector}, after, after_reprojected, boundary_max_abs_height, lipschitz_constant, "
+         "orientation_before, orientation_after {positive, flipped, degenerate, undecided}, overlaps_after, "
+         "guarantees_hold, ...}], summary {absolute_error_before, absolute_error_after, "
+         "normal_vector_error_before, normal_vector_error_after, flipped_before, flipped_after, "
+         "overlaps_after}, criteria, vertices, triangles, watertight_seams, conforming, seconds, status, "
+         "failure, [svg].\n"
+         "Defaults: --method whitney --kernel filtered --layers 1 --min-angle 20.7; the surface file may be "
+         "given positionally (relgeo join SURFACE --mesh A.off --mesh B.off); without --output: "
+         "SURFACE_joined.off in the current folder.\n"
+         "Exit codes: 0 success; 1 the result failed (a flipped, degenerate or overlapping triangle, an open "
+         "seam, an error above a criterion) or a step of the joiner failed; 2 bad input or usage (a missing or "
+         "unreadable file, a mesh that does not project onto its face, meshes that do not fit the model, a "
+         "bad option).\n";
+}
+
+int run_join_command(const Join_tool_options& o, Streams io) {
+  check_options(o);
+  const std::string output = o.output.empty() ? default_join_output(o) : o.output;
+  const Join_tool_result res = run_or_explain(o, output, !o.svg.empty());
+  if (!o.svg.empty())
+    join_picture(res.pictures, "relgeo join --method " + o.method + ": " + std::to_string(flipped_in_picture(res.pictures)) +
+                                   " flipped triangle(s) in (u,v)")
+        .write(o.svg);
+
+  Json j;
+  j["command"] = "join";
+  j["kernel"] = find_kernel(o.kernel).label();
+  j["kernel_model"] = res.kernel_model;
+  j["surface"] = o.surface;
+  j["meshes"] = o.meshes;
+  j["curves"] = o.curves;
+  j["output"] = output;
+  j["summary"] = summary_json(res.report);
+  j["criteria"] = {{"max_absolute_error", io::json_measure(o.max_absolute_error)},
+                   {"max_normal_error", io::json_measure(o.max_normal_error)}};
+  for (const auto& [key, value] : res.json.items())
+    if (!j.contains(key)) j[key] = value;
+  if (!o.svg.empty()) j["svg"] = o.svg;
+  if (!o.report.empty()) io::write_text_file(o.report, io::dump_json(j) + "\n", "report");
+  if (o.format == Format::json) io.out << io::dump_json(j) << '\n';
+  else io.out << text_report(o, output, res);
+  if (res.status != "ok") {
+    io.err << "relgeo: failure: the joined mesh failed its checks (" << res.failure << ")\n";
+    return exit_failure;
+  }
+  return exit_success;
+}
+
+}  // namespace relgeo::tool

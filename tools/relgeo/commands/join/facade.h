@@ -1,0 +1,53 @@
+// tools/relgeo/commands/join/facade.h — what `relgeo join` and the
+// experiment's joining section run: relgeo::run_join_with under a kernel
+// named at run time (instantiated in dispatch.cpp only, with the joiner's
+// heavy headers), and the result's triangles classified in each face's (u,v)
+// domain for the pictures. Light: no kernel, CGAL or Eigen header.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "commands/join/command.h"
+#include "relgeo/io/json.h"
+#include "relgeo/joining/join_report.h"
+#include "relgeo/kernel/point.h"
+#include "relgeo/mesh/triangle_mesh.h"
+
+namespace relgeo::tool {
+
+/// The kernels `join` accepts (its certified checks): failsafe, interval,
+/// filtered, exact.                                      [dispatch.cpp]
+const std::vector<std::string>& join_kernel_names();
+/// Throws Usage_error unless `name` names one of join_kernel_names().
+void validate_join_kernel(const std::string& name);
+
+/// One face's part of the result in its (u,v) domain.
+struct Join_face_picture {
+  std::vector<std::vector<Point_2<double>>> domain;  ///< trim loops (outer first)
+  std::vector<Point_2<double>> uv;                   ///< result vertices projected onto the face
+  std::vector<Triangle> triangles;                   ///< over `uv`
+  std::vector<bool> flipped;                         ///< per triangle: flipped, degenerate or undecided (certified)
+  std::size_t unprojected = 0;                       ///< triangles left out: a corner has no projection
+};
+
+/// What one run gives.
+struct Join_tool_result {
+  std::string status = "ok", failure;  ///< relgeo::Join_command_report's verdict
+  std::size_t faces = 0;
+  Join_report report;
+  io::Json json;                       ///< relgeo::to_json(Join_command_report)
+  std::string kernel_model;            ///< K::name()
+  std::vector<Join_face_picture> pictures;  ///< per face, when asked for
+};
+
+/// Reads, joins and writes `output` as relgeo::run_join_with does, under the
+/// kernel named `options.kernel`, with the options' criteria and joiner
+/// parameters (checked by the command before). With `pictures`, also
+/// classifies the result's triangles per face.
+/// \throws relgeo::Error as run_join does, Usage_error for a kernel join
+/// does not take.
+Join_tool_result run_join_tool(const Join_tool_options& options, const std::string& output, bool pictures);
+
+}  // namespace relgeo::tool

@@ -1,0 +1,99 @@
+# Tool tests of `relgeo join` and the "joining" experiment section (included
+# from CMakeLists.txt inside if(RELGEO_BUILD_TESTS), with relgeo_tool_test and
+# _tmp defined there). Inputs in testdata/, made by the library
+# (relgeo/joining/test_models.h, as the joining section's inputs are):
+#   join_folding.json, join_folding_{0,1}.off  folding_case(): two planes,
+#       patch 0 with a thin strip along the seam, patch 1 overlapping it
+#   join_folding_far.off  patch 0 moved 3 along x: beyond face 0's domain
+#   join_two_faces.json, join_two_faces_{0,1}.off  two_face_model(true),
+#       make_joining_case with max_edge_uv {0.12, 0.09}: noisy meshes (1e-3
+#       along the normal) of two bicubic faces, edge 0 with its 3D curve
+#   join_not_json.json  text that is not JSON
+set(_jd ${CMAKE_CURRENT_SOURCE_DIR}/testdata)
+set(_fold ${_jd}/join_folding.json --mesh ${_jd}/join_folding_0.off --mesh ${_jd}/join_folding_1.off)
+set(_two ${_jd}/join_two_faces.json --mesh ${_jd}/join_two_faces_0.off --mesh ${_jd}/join_two_faces_1.off)
+
+relgeo_tool_test(help_join 0 ARGS help join
+  STDOUT_MATCHES "--mesh" "--method" "--max-absolute-error" "--max-normal-error" "normal-vector error" "--svg")
+# The Whitney joiner on the folding input: valid (no flip, no overlap, seams
+# closed), report and picture written.
+relgeo_tool_test(join_folding_whitney 0 STDOUT_JSON
+  ARGS join ${_fold} --output ${_tmp}/join/folding_whitney.off --report ${_tmp}/join/folding_whitney.json
+       --svg ${_tmp}/join/folding_whitney.svg --format json
+  STDOUT_MATCHES "\"command\": \"join\"," "\"method\": \"whitney\"," "\"kernel\": \"filtered\","
+                 "\"flipped_before\": 0," "\"flipped_after\": 0," "\"overlaps_after\": 0"
+                 "\"watertight_seams\": true," "\"guarantees_hold\": true," "\"status\": \"ok\","
+  STDOUT_REJECTS "\"flipped\": [1-9]" "\"guarantees_hold\": false"
+  FILES ${_tmp}/join/folding_whitney.off ${_tmp}/join/folding_whitney.svg
+  JSON_FILES ${_tmp}/join/folding_whitney.json)
+# Naive midpoint sewing folds the same input: status failed, exit 1, the
+# flipped triangles counted (certified) and shown.
+relgeo_tool_test(join_folding_naive_folds 1 STDOUT_JSON
+  ARGS join ${_fold} --method naive --kernel exact --output ${_tmp}/join/folding_naive.off
+       --svg ${_tmp}/join/folding_naive.svg --format json
+  STDOUT_MATCHES "\"method\": \"naive-midpoint\"," "\"kernel\": \"exact\"," "\"flipped_after\": [1-9][0-9]*,"
+                 "\"status\": \"failed\"," "\"failure\": \"flipped-triangles\""
+  STDERR_MATCHES "failure: the joined mesh failed its checks \\(flipped-triangles\\)"
+  FILES ${_tmp}/join/folding_naive.off ${_tmp}/join/folding_naive.svg)
+# Curved faces with noisy meshes, defaults (surface positional, output
+# SURFACE_joined.off here): the guarantees hold on both faces.
+relgeo_tool_test(join_two_faces_defaults 0 WORKDIR ${_tmp}/join_defaults
+  ARGS join ${_two} --report ${_tmp}/join_defaults/report.json
+  STDOUT_MATCHES "method +whitney, kernel filtered \\(filtered\\)" "edges: 1 with curve"
+                 "-> join_two_faces_joined.off" "0 +[0-9.e-]+ +[0-9.e-]+ .* hold" "1 +[0-9.e-]+ +[0-9.e-]+ .* hold"
+                 "seams +watertight" "status +ok"
+  FILES ${_tmp}/join_defaults/join_two_faces_joined.off
+  JSON_FILES ${_tmp}/join_defaults/report.json)
+# The same under intervals, case 2 (edge curves ignored), two peripheral layers.
+relgeo_tool_test(join_two_faces_interval_median 0 STDOUT_JSON
+  ARGS join ${_two} --kernel interval --no-edge-curves --layers 2 --output ${_tmp}/join/two_median.obj --format json
+  STDOUT_MATCHES "\"kernel_model\": \"interval\"," "\"edges_with_median\": 1," "\"flipped_after\": 0,"
+                 "\"status\": \"ok\","
+  FILES ${_tmp}/join/two_median.obj)
+# An error criterion the noisy meshes cannot meet: failed, exit 1.
+relgeo_tool_test(join_criterion_exceeded 1 STDOUT_JSON
+  ARGS join ${_two} --max-normal-error 1e-6 --output ${_tmp}/join/two_criterion.off --format json
+  STDOUT_MATCHES "\"max_normal_error\": 1e-06" "\"status\": \"failed\"," "\"failure\": \"normal-vector-error\""
+  STDERR_MATCHES "normal-vector-error")
+# Bad input: one typed error each (exit 2, one line on stderr).
+relgeo_tool_test(join_missing_mesh 2
+  ARGS join ${_jd}/join_folding.json --mesh ${_jd}/join_folding_0.off --mesh ${_jd}/no_such_mesh.off
+       --output ${_tmp}/join/x.off
+  STDERR_MATCHES "no_such_mesh.off")
+relgeo_tool_test(join_missing_surface 2
+  ARGS join ${_jd}/no_such_model.json --mesh ${_jd}/join_folding_0.off --output ${_tmp}/join/x.off
+  STDERR_MATCHES "cannot read surface file .*no_such_model.json.*: no such file")
+relgeo_tool_test(join_unreadable_surface 2
+  ARGS join ${_jd}/join_not_json.json --mesh ${_jd}/join_folding_0.off --output ${_tmp}/join/x.off
+  STDERR_MATCHES "join_not_json.json line 1: not JSON")
+relgeo_tool_test(join_mesh_does_not_project 2
+  ARGS join ${_jd}/join_folding.json --mesh ${_jd}/join_folding_far.off --mesh ${_jd}/join_folding_1.off
+       --output ${_tmp}/join/x.off
+  STDERR_MATCHES "a mesh does not project onto its face \\(outside_domain\\)")
+relgeo_tool_test(join_meshes_do_not_fit 2
+  ARGS join ${_jd}/join_folding.json --mesh ${_jd}/join_folding_0.off --output ${_tmp}/join/x.off
+  STDERR_MATCHES "the meshes do not fit the surface model")
+relgeo_tool_test(join_no_mesh 2 ARGS join ${_jd}/join_folding.json STDERR_MATCHES "no mesh")
+relgeo_tool_test(join_no_surface 2 ARGS join --mesh ${_jd}/join_folding_0.off STDERR_MATCHES "no surface file")
+relgeo_tool_test(join_bad_layers 2 ARGS join ${_fold} --layers 0 --output ${_tmp}/join/x.off STDERR_MATCHES "--layers")
+relgeo_tool_test(join_bad_min_angle 2 ARGS join ${_fold} --min-angle 45 --output ${_tmp}/join/x.off
+  STDERR_MATCHES "--min-angle")
+relgeo_tool_test(join_bad_criterion 2 ARGS join ${_fold} --max-absolute-error -1 --output ${_tmp}/join/x.off
+  STDERR_MATCHES "--max-absolute-error")
+relgeo_tool_test(join_bad_method 2 ARGS join ${_fold} --method glue --output ${_tmp}/join/x.off
+  STDERR_MATCHES "--method")
+relgeo_tool_test(join_kernel_not_certified 2 ARGS join ${_fold} --kernel double --output ${_tmp}/join/x.off
+  STDERR_MATCHES "not supported by join")
+relgeo_tool_test(join_unknown_kernel 2 ARGS join ${_fold} --kernel quadruple --output ${_tmp}/join/x.off)
+
+relgeo_tool_test(experiment_quick_joining 0
+  ARGS experiment --quick --quiet --only joining --output ${_tmp}/results_joining
+  STDOUT_MATCHES "folding +naive .* [1-9][0-9]* +[1-9][0-9]* +closed +failed \\(flipped-triangles\\)"
+                 "folding +whitney .* 0 +0 +closed +ok"
+                 "two-faces-curve +whitney .* 0 +0 +closed +ok"
+                 "three-faces-median +whitney .* ok" "cylinder-plane +whitney .* ok"
+  FILES ${_tmp}/results_joining/joining.json
+        ${_tmp}/results_joining/joining/folding_naive.svg
+        ${_tmp}/results_joining/joining/folding_whitney.svg
+        ${_tmp}/results_joining/joining/inputs/folding.json
+  JSON_FILES ${_tmp}/results_joining/joining.json)

@@ -17,6 +17,7 @@
 //    condition fails for the stored data) the exact kernel does not certify.
 //    Margins are measured on the hull K computed, which lies inside the
 //    exact hull, so K's margin minus its backward error can only be smaller.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -125,6 +126,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     exact = check_extrusion<Exact_kernel>(*contour, options, Exact_kernel{}, Monotone_chain_hull{});
     require(valid_options, "check_extrusion accepted a negative or non-finite uncertainty");
+  } catch (const Non_finite_input& e) {
+    // Finite control points whose hodograph (degree times differences,
+    // in double) overflows: refused as non-finite. Allowed only near the
+    // largest double.
+    double largest = 0;
+    for (const auto& p : chain) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+    require(largest > 0x1p-8 * std::numeric_limits<double>::max(),
+            std::string("check_extrusion: Non_finite_input for finite points far from overflow: ") + e.what());
+    return 0;
   } catch (const Invalid_input& e) {
     require(!valid_options, std::string("check_extrusion refused valid options: ") + e.what());
     return 0;

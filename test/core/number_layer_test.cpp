@@ -139,6 +139,11 @@ TEST(NumberLayer, SignsAndBoundsOfEveryNumberType) {
   EXPECT_LE(static_cast<long double>(lower_double(third)), third);
   EXPECT_GE(static_cast<long double>(upper_double(third)), third);
   EXPECT_EQ(nearest_double(Interval(1, 3)), 2.0);
+  // Subnormal points stay themselves (fuzz/corpus/hull/regression_interval_subnormal_point).
+  EXPECT_EQ(nearest_double(Interval(-0x1p-1074)), -0x1p-1074);
+  EXPECT_EQ(nearest_double(Interval(0x1p-1074, 0x3p-1074)), 0x2p-1074);
+  const double max = std::numeric_limits<double>::max();
+  EXPECT_EQ(nearest_double(Interval(max / 2, max)), 0.75 * max);  // no overflow of the sum
   EXPECT_EQ(Number_traits<Mpfr_number<64>>::name(), "mpfr-64");
   EXPECT_EQ(Number_traits<float>::unit_roundoff, 0x1p-24);
 }

@@ -156,7 +156,14 @@ struct Number_traits<Interval> {
   static std::string name() { return "interval"; }
   static bool is_finite(const Interval& x) { return std::isfinite(x.inf()) && std::isfinite(x.sup()); }
   static Certified_sign sign(const Interval& x) { return x.sign(); }
-  static double to_double(const Interval& x) { return 0.5 * x.inf() + 0.5 * x.sup(); }
+  /// The midpoint, rounded once where the sum does not overflow: halving the
+  /// bounds first rounds subnormals away (a point interval at 2^-1074 gave 0;
+  /// found by fuzz/hull).
+  static double to_double(const Interval& x) {
+    if (x.inf() == x.sup()) return x.inf();
+    const double sum = x.inf() + x.sup();
+    return std::isfinite(sum) ? 0.5 * sum : 0.5 * x.inf() + 0.5 * x.sup();
+  }
   static double lower(const Interval& x) { return x.inf(); }
   static double upper(const Interval& x) { return x.sup(); }
   static Interval from_double(double d) { return Interval(d); }

@@ -1,7 +1,6 @@
 // relgeo/hull/monotone_chain.h — Andrew's monotone chain algorithm.
 #pragma once
 
-#include <ranges>
 #include <span>
 #include <vector>
 
@@ -32,11 +31,15 @@ Hull_result<typename K::Point_2> monotone_chain(std::span<const typename K::Poin
                                                 const Hull_options& options = {}) {
   return internal::sorted_hull(points, k, options, "monotone_chain", [](const auto& sorted, const auto& kernel,
                                                                       auto& chain, auto& r) {
+    // Plain index loops rather than std::views: clang 14 (Debian 12's
+    // default) cannot compile libstdc++ 12's iota/reverse views.
+    const auto orientation = kernel.orientation_2_object();
     const std::size_t m = sorted.size();
-    internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m), kernel, chain, 0, r);  // lower, L..R
+    for (std::size_t p = 0; p < m; ++p)  // lower, L..R
+      internal::extend_chain(sorted, p, orientation, Certified_sign::positive, chain, 0, r);
     const std::size_t lower_size = chain.size();
-    internal::scan_chain(sorted, std::views::iota(std::size_t{0}, m - 1) | std::views::reverse, kernel,
-                         chain, lower_size - 1, r);  // upper, R..L
+    for (std::size_t p = m - 1; p-- > 0;)  // upper, R..L
+      internal::extend_chain(sorted, p, orientation, Certified_sign::positive, chain, lower_size - 1, r);
     chain.pop_back();  // L again
   });
 }

@@ -17,19 +17,54 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/mesh/internal/off_reader.h"
+#include "relgeo/mesh/internal/ply_check.h"
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/polygon_soup.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo {
+
+namespace internal {
+
+/// The extension of a file name in lower case (as CGAL's IO dispatches).
+inline std::string lower_case_extension(const std::string& path) {
+  const std::size_t dot = path.rfind('.');
+  std::string e = dot == std::string::npos ? std::string() : path.substr(dot + 1);
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return e;
+}
+
+/// A binary STL (one that does not start with "solid") must hold the 84-byte
+/// header and the 50 bytes of each triangle its header announces: CGAL's
+/// reader takes a shorter file for an empty mesh.
+inline void check_binary_stl_size(std::string_view text, const std::string& path) {
+  const std::size_t start = text.find_first_not_of(" \t\r\n");
+  if (start != std::string_view::npos && text.substr(start, 5) == "solid") return;  // ASCII (or CGAL's fallback)
+  if (text.size() < 84)
+    throw Unreadable_file("binary STL file '" + path + "' has " + std::to_string(text.size()) +
+                          " bytes, fewer than its 84-byte header");
+  std::uint32_t n = 0;
+  for (int i = 3; i >= 0; --i) n = (n << 8) | static_cast<unsigned char>(text[80 + static_cast<std::size_t>(i)]);
+  if (n > (text.size() - 84) / 50)
+    throw Unreadable_file("binary STL file '" + path + "' announces " + std::to_string(n) + " triangles but holds " +
+                          std::to_string((text.size() - 84) / 50));
+}
+
+}  // namespace internal
 
 /// Options of read_mesh.
 struct Read_options {
@@ -96,35 +131,52 @@ inline void write_feature_tags(const std::string& path, const Feature_tags& tags
 }
 
 /// \brief Reads a triangle mesh from an OFF, OBJ, PLY or STL file (by
-/// extension, through CGAL::IO::read_polygon_soup), with double coordinates.
+/// extension), with double coordinates. OFF is read by relgeo's own reader
+/// (internal/off_reader.h: errors name the line); OBJ, PLY and STL by
+/// CGAL::IO::read_polygon_soup, PLY after a structural check of its counts
+/// (internal/ply_check.h) and binary STL after a check of its size: CGAL's
+/// readers trust the counts in a file (doc/reliability.md).
 ///
-/// \throws Unreadable_file when the file is missing, of an unknown format or
-/// cannot be parsed; Non_finite_input for NaN or infinite coordinates;
+/// \throws Unreadable_file when the file is missing, empty, of an unknown
+/// format or cannot be parsed (also when a count in it exceeds what the file
+/// holds); Non_finite_input for NaN or infinite coordinates;
 /// Invalid_input / Invalid_mesh for polygons that are not triangles (unless
 /// triangulated) or bad indices. The mesh itself is not checked (check_mesh).
 inline Triangle_mesh<Point_3<double>> read_mesh(const std::string& path, const Read_options& options = {}) {
   using CP = CGAL::Simple_cartesian<double>::Point_3;
   std::vector<CP> pts;
   std::vector<std::vector<std::size_t>> polys;
+  std::string text;
   {
-    std::ifstream probe(path);
-    if (!probe) throw Unreadable_file("cannot open mesh file '" + path + "'");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Unreadable_file("cannot open mesh file '" + path + "'");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
-  bool ok = false;
-  try {
-    ok = CGAL::IO::read_polygon_soup(path, pts, polys);
-  } catch (const std::exception& e) {
-    throw Unreadable_file("cannot parse mesh file '" + path + "': " + e.what());
-  }
-  if (!ok) throw Unreadable_file("cannot parse mesh file '" + path + "' (OFF, OBJ, PLY or STL expected)");
+  if (text.find_first_not_of(" \t\r\n\v\f") == std::string::npos)
+    throw Unreadable_file("mesh file '" + path + "' is empty");
+  const std::string extension = internal::lower_case_extension(path);
   std::vector<Point_3<double>> points;
-  points.reserve(pts.size());
-  for (const CP& p : pts) {
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw Non_finite_input("mesh file '" + path + "': vertex " + std::to_string(points.size()) +
-                             " has a NaN or infinite coordinate");
-    points.push_back({p.x(), p.y(), p.z()});
+  if (extension == "off") {
+    internal::Off_soup soup = internal::read_off_soup(text, path);
+    points = std::move(soup.points);
+    polys = std::move(soup.polygons);
+  } else {
+    if (extension == "ply") internal::check_ply_structure(text, path);
+    if (extension == "stl") internal::check_binary_stl_size(text, path);
+    bool ok = false;
+    try {
+      ok = CGAL::IO::read_polygon_soup(path, pts, polys);
+    } catch (const std::exception& e) {
+      throw Unreadable_file("cannot parse mesh file '" + path + "': " + e.what());
+    }
+    if (!ok) throw Unreadable_file("cannot parse mesh file '" + path + "' (OFF, OBJ, PLY or STL expected)");
+    points.reserve(pts.size());
+    for (const CP& p : pts) points.push_back({p.x(), p.y(), p.z()});
   }
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if (!std::isfinite(points[v].x) || !std::isfinite(points[v].y) || !std::isfinite(points[v].z))
+      throw Non_finite_input("mesh file '" + path + "': vertex " + std::to_string(v) +
+                             " has a NaN or infinite coordinate");
   Triangle_mesh<Point_3<double>> m =
       from_polygon_soup(std::move(points), polys, Soup_options{.triangulate_polygons = options.triangulate_polygons});
   if (!options.tags_path.empty()) m.tags = read_feature_tags(options.tags_path);

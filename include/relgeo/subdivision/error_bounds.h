@@ -152,7 +152,8 @@ struct Loop_limit_mesh_bounds {
 ///
 /// compute(control, k) refines the control mesh k times, takes the limit
 /// mesh, and bounds the limit surface over each of its faces (local patches
-/// of the refined mesh). Requirements and errors as Loop_subdivider.
+/// of the refined mesh). Requirements and errors as Loop_subdivider; also
+/// Error (computation_failure) when a face normal overflows the number type.
 /// Complexity: O(F) with a per-face constant: regular faces reuse the
 /// universal ranges of the 12 box-spline functions (computed once, by the
 /// constructor), irregular faces (one per face around an irregular vertex)
@@ -271,6 +272,12 @@ class Loop_error_bounds {
     fr.E1 = internal::point_difference(fr.q[1], fr.q[0]), fr.E2 = internal::point_difference(fr.q[2], fr.q[0]);
     fr.n = internal::point_cross(fr.E1, fr.E2);
     fr.nn = internal::point_dot(fr.n, fr.n);
+    // Finite input can overflow here in floating point (|n| ~ |E|^2): refuse
+    // rather than return NaN bounds (test/data/bad/coordinates_1e300.off).
+    if (!is_finite_number(fr.nn))
+      throw Error(Error_code::computation_failure, "Loop error bounds: the normal of limit-mesh face " +
+                                                       std::to_string(g) +
+                                                       " overflows (coordinates too large for the number type)");
     r.normal[g] = fr.n;
     const double len = std::sqrt(nearest_double(fr.nn));
     r.normal_length[g] = len;

@@ -42,7 +42,9 @@ struct Default_loop_kernel<Point_3<FT>> : Kernel_for_number<FT> {};
 /// oriented, with no repeated vertex in a face, valid tags and finite
 /// coordinates, and no two faces sharing two edges (a two-face pillow, whose
 /// refinement is not a manifold); it throws Invalid_mesh (listing the issues),
-/// Invalid_input (the pillow) or Non_finite_input otherwise. Open meshes are fine (boundary = crease rules);
+/// Invalid_input (the pillow) or Non_finite_input otherwise, and
+/// Error (computation_failure) when finite coordinates overflow in the
+/// kernel's arithmetic. Open meshes are fine (boundary = crease rules);
 /// isolated vertices are kept fixed; geometrically degenerate (collinear)
 /// faces are refined like any other.
 ///
@@ -82,6 +84,7 @@ class Loop_subdivider {
       lv = std::move(next);
       cur = step(cur, lv, false, i + 1 < levels ? &next : nullptr);
     }
+    check_result(cur.vertices, "refinement");
     return cur;
   }
 
@@ -103,7 +106,9 @@ class Loop_subdivider {
       cur = step(cur, lv, false, &next);
       lv = std::move(next);
     }
-    return step(cur, lv, true, nullptr);
+    Mesh r = step(cur, lv, true, nullptr);
+    check_result(r.vertices, "limit mesh");
+    return r;
   }
 
   /// The limit positions of the mesh's own vertices (stencils of loop_masks.h).
@@ -118,6 +123,7 @@ class Loop_subdivider {
       const Point_3<FT> p = apply_stencil(limit_stencil(t, f, weights_, v), m.vertices);
       out.push_back(A::make(p.x, p.y, p.z));
     }
+    check_result(out, "limit positions");
     return out;
   }
 
@@ -157,6 +163,17 @@ class Loop_subdivider {
         throw Non_finite_input("Loop subdivision: vertex " + std::to_string(v) +
                                " has a NaN or infinite coordinate");
   }
+  // Finite input can overflow in floating point (a vertex's neighbours are
+  // summed before they are weighted): refuse rather than return infinities
+  // (test/data/bad/coordinates_max.off; doc/reliability.md).
+  static void check_result(const std::vector<Point>& out, const char* what) {
+    for (std::size_t v = 0; v < out.size(); ++v)
+      if (!internal::point_is_finite(out[v]))
+        throw Error(Error_code::computation_failure,
+                    std::string("Loop subdivision: the ") + what + " overflows at vertex " + std::to_string(v) +
+                        " (coordinates too close to the largest finite value of the number type)");
+  }
+
   bool blz() const { return options().crease_rules == Loop_crease_rules::biermann_levin_zorin; }
 
   // The named steps of step(), in order. Each reads the parent's adjacency lv
@@ -181,6 +198,7 @@ class Loop_subdivider {
   std::vector<std::uint8_t> explicit_ring_;
   std::vector<Index> valence_, sector_faces_;
   bool any_crease_ = false;
+  bool any_special_ = false;  // a crease edge or a tagged corner (BLZ needs sectors even without creases)
 };
 
 template <class K>
@@ -242,6 +260,11 @@ void Loop_subdivider<K>::sum_rings(const Level& lv, const Acc* p) {
   any_crease_ = false;
   for (Index e = 0; e < ne; ++e) any_crease_ |= f.edge_is_crease[e] != 0;
   if (any_crease_) crease_ring_.assign(nv, Acc{FT(0), FT(0), FT(0)});
+  // A tagged corner needs no crease edge, and BLZ's edge rule next to it
+  // needs its sector size all the same (fuzz/loop_subdivision found the
+  // sizes read from a buffer never filled).
+  any_special_ = any_crease_;
+  for (Index v = 0; v < nv && !any_special_; ++v) any_special_ = f.is_special(v);
   for (Index e = 0; e < ne; ++e) {
     const Index h = t.edge_halfedge(e), a = t.source(h), b = t.target(h);
     internal::accumulate_point(ring_[a], p[b]), internal::accumulate_point(ring_[b], p[a]);
@@ -257,7 +280,7 @@ void Loop_subdivider<K>::sum_rings(const Level& lv, const Acc* p) {
 // BLZ: the sector size of every outgoing half-edge of a special vertex.
 template <class K>
 void Loop_subdivider<K>::find_sector_sizes(const Level& lv) {
-  if (!blz() || !any_crease_) return;
+  if (!blz() || !any_special_) return;
   sector_faces_.assign(lv.topology.number_of_halfedges(), 0);
   internal::fill_sector_faces(lv.topology, lv.features, sector_faces_);
 }
@@ -296,8 +319,8 @@ void Loop_subdivider<K>::mark_explicit_rings(const Level& lv) {
   const Loop_features& f = lv.features;
   const Index nv = static_cast<Index>(t.number_of_vertices()), ne = static_cast<Index>(t.number_of_edges());
   wing_.resize(t.number_of_faces());
-  explicit_ring_.assign(any_crease_ ? nv : 0, 0);  // without creases there are no darts
-  if (!any_crease_) return;
+  explicit_ring_.assign(any_special_ ? nv : 0, 0);  // without creases and corners no ring is explicit
+  if (!any_special_) return;
   for (Index v = 0; v < nv; ++v) explicit_ring_[v] = f.vertex_kind[v] == Vertex_kind::dart;
   for (Index e = 0; e < ne; ++e) {
     const Index h = t.edge_halfedge(e), a = t.source(h), b = t.target(h);
@@ -334,7 +357,7 @@ void Loop_subdivider<K>::edge_points(const Level& lv, const Acc* p, std::vector<
         r = internal::point_sum(internal::point_combination(rule.end_a(), p[a], rule.end_b(), p[b]),
                                 internal::point_combination(rule.wing(), p[c], rule.wing(), p[d]));
     }
-    if (to_limit && any_crease_) {
+    if (to_limit && any_special_) {
       if (explicit_ring_[a]) internal::accumulate_point(ring2_[a], r);
       if (explicit_ring_[b]) internal::accumulate_point(ring2_[b], r);
     }
@@ -426,7 +449,7 @@ void Loop_subdivider<K>::limit_of_old_vertices(const Level& lv, const Acc* p, st
     const internal::Vertex_rule<FT> r = internal::limit_point_rule(weights_, kind, n);
     switch (r.neighbours) {
       case internal::Rule_neighbours::ring:
-        if (any_crease_ && explicit_ring_[v]) {
+        if (any_special_ && explicit_ring_[v]) {
           q[v] = internal::point_combination(*r.centre, q[v], *r.neighbour, ring2_[v]);
         } else {
           const Acc r2 = internal::point_combination(FT(end * FT(static_cast<int>(n))), p[v], refined_ring_weight, ring_[v]);

@@ -1,4 +1,4 @@
-// relgeo/hull/internal/chain_scan.h — the stack scan shared by Andrew's
+// relgeo/hull/internal/chain_scan.h — the stack step shared by Andrew's
 // monotone chain and Fortune's Graham scan: the middle point of the last
 // triple is kept only on a *certain* turn the right way, so an `uncertain`
 // answer drops it (Fortune's fail-safe rule).
@@ -29,16 +29,6 @@ void extend_chain(const Sorted& input, std::size_t r, const Orientation& orienta
     chain.pop_back();
   }
   chain.push_back(r);
-}
-
-/// Extends `chain` through `positions`, in order, keeping a middle point
-/// only on a certain left turn.
-template <class K, class Sorted, class Positions, class Point>
-void scan_chain(const Sorted& input, Positions&& positions, const K& k,
-                std::vector<std::size_t>& chain, std::size_t chain_floor, Hull_result<Point>& stats) {
-  const auto orientation = k.orientation_2_object();
-  for (std::size_t r : positions)
-    extend_chain(input, r, orientation, Certified_sign::positive, chain, chain_floor, stats);
 }
 
 }  // namespace relgeo::internal

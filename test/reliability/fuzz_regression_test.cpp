@@ -67,19 +67,14 @@ TEST(FuzzRegression, BlzCornerWithoutCreasesRefinesByTheStencils) {
 }
 
 /// fuzz/implicit_point, fuzz/pending/implicit_point/regression_lpi_approximation_scale
-/// (moves to fuzz/corpus/implicit_point/ once the fix of mesh-boolean is merged):
+/// (fuzz/corpus/implicit_point/regression_lpi_approximation_scale*):
 /// when the filter cannot certify W, Filtered_exact_kernel approximates an
 /// implicit point from scaled integers; the scale does not cancel in X / W
 /// (degrees 4 and 3), so the point came out multiplied by it with a stated
 /// error of 0: (2^112, 0, 0) for (1, 0, 0) below.
-/// The fix is the unscaling of the branch mesh-boolean
-/// (internal::Scaled_integers::unscale); until it is merged this test skips.
-template <class S>
-constexpr bool unscales_exact_coordinates = requires(const S& s, mpq_class& q) { s.unscale(q); };
+/// The fix: internal::Scaled_integers::unscale in the exact fallback.
 
 TEST(FuzzRegression, FilteredExactApproximationOfAnUncertainLpiIsTheExactPoint) {
-  if constexpr (!unscales_exact_coordinates<internal::Scaled_integers>)
-    GTEST_SKIP() << "known bug, fixed on branch mesh-boolean (Scaled_integers::unscale)";
   const Filtered_exact_kernel k;
   const auto p = k.construct_point_3_object();
   const auto make = k.construct_implicit_point_3_object();

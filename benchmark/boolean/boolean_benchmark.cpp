@@ -25,6 +25,7 @@
 
 #include "boolean_benchmark.h"
 #include "common/command_line.h"
+#include "common/process_memory.h"
 #include "relgeo/boolean.h"
 #include "relgeo/kernel.h"
 #include "relgeo/mesh/mesh_io.h"
@@ -139,15 +140,6 @@ struct Figure {
 };
 std::map<Key, Figure> figures;
 
-std::size_t proc_status_bytes(const char* key) {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  const std::size_t k = std::strlen(key);
-  while (std::getline(f, line))
-    if (line.compare(0, k, key) == 0 && line.size() > k && line[k] == ':')
-      return static_cast<std::size_t>(std::strtoull(line.c_str() + k + 1, nullptr, 10)) * 1024;
-  return 0;
-}
 
 // Peak resident memory above what the prepared operands use, in a forked child.
 double peak_memory_mb(const std::function<Run_outcome()>& run) {

@@ -10,27 +10,19 @@
 #include <utility>
 
 #include "boolean_benchmark.h"
+#include "relgeo/mesh/cgal_conversion.h"
 
 namespace relgeo_bench {
 namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-template <class K>
-CGAL::Surface_mesh<typename K::Point_3> surface(const Mesh& m) {
-  CGAL::Surface_mesh<typename K::Point_3> s;
-  std::vector<typename CGAL::Surface_mesh<typename K::Point_3>::Vertex_index> v;
-  for (const auto& p : m.vertices) v.push_back(s.add_vertex(typename K::Point_3(p.x, p.y, p.z)));
-  for (const auto& f : m.faces) s.add_face(v[f[0]], v[f[1]], v[f[2]]);
-  return s;
-}
-
 // The Surface_mesh operands are built before the timed run (corefinement
 // changes them, so each run gets its own).
 template <class K>
 std::function<Run_outcome()> corefine(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
   auto operands = std::make_shared<std::pair<CGAL::Surface_mesh<typename K::Point_3>, CGAL::Surface_mesh<typename K::Point_3>>>(
-      surface<K>(a), surface<K>(b));
+      relgeo::to_surface_mesh<typename K::Point_3>(a), relgeo::to_surface_mesh<typename K::Point_3>(b));
   return [operands, op] {
     auto& [sa, sb] = *operands;
     CGAL::Surface_mesh<typename K::Point_3> out;

@@ -72,6 +72,7 @@
 #include <boost/sort/pdqsort/pdqsort.hpp>
 
 #include "common/command_line.h"
+#include "common/process_memory.h"
 #include "hull_benchmark.h"
 #include "relgeo/error/hull_backward_error.h"
 #include "relgeo/hull.h"
@@ -399,17 +400,6 @@ void Ratio_reporter::print(std::ostream& out, const std::vector<std::string>& or
 
 // ---- peak memory -----------------------------------------------------------------------
 
-/// A line "Key:   123 kB" of /proc/self/status, in bytes (0 if absent).
-std::size_t proc_status_bytes(const char* key) {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  const std::size_t k = std::strlen(key);
-  while (std::getline(f, line))
-    if (line.compare(0, k, key) == 0 && line.size() > k && line[k] == ':')
-      return static_cast<std::size_t>(std::strtoull(line.c_str() + k + 1, nullptr, 10)) * 1024;
-  return 0;
-}
-
 struct Memory_figure {
   std::size_t input_bytes = 0, baseline = 0, peak = 0, hull = 0;
   bool reset_ok = false, ok = false;
@@ -437,9 +427,9 @@ Memory_figure measure_memory(const Subject& s, std::size_t n) {
       clear << "5" << std::flush;  // resets VmHWM to the current RSS
       c.reset_ok = static_cast<bool>(clear);
     }
-    c.baseline = proc_status_bytes("VmRSS");
+    c.baseline = relgeo_bench::proc_status_bytes("VmRSS");
     c.hull = run();
-    c.peak = proc_status_bytes("VmHWM");
+    c.peak = relgeo_bench::proc_status_bytes("VmHWM");
     c.ok = true;
     const ssize_t w = write(fds[1], &c, sizeof c);
     _exit(w == static_cast<ssize_t>(sizeof c) ? 0 : 1);

@@ -53,7 +53,7 @@ struct Oracle_comparison {
   double cgal_volume = 0;
   std::size_t cgal_faces = 0;
   std::optional<double> symmetric_difference_volume;  ///< |result xor CGAL's| (relgeo's exact Boolean of the two)
-  double hausdorff = 0;  ///< symmetric Hausdorff distance, sampled (CGAL PMP)
+  double hausdorff = 0;  ///< symmetric Hausdorff distance, sampled (CGAL PMP); NaN: not manifold
 };
 Oracle_comparison compare_with_cgal(const Mesh_double& a, const Mesh_double& b, Boolean_operation op,
                                     const Mesh_double& result);

@@ -3,6 +3,8 @@
 // their symmetric difference (relgeo's exact Boolean of the two outputs) and
 // their symmetric Hausdorff distance (CGAL PMP, sampled). Its own
 // translation unit: the corefinement headers take a minute to compile.
+#include <cmath>
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
@@ -12,6 +14,7 @@
 
 #include "commands/boolean/facade.h"
 #include "relgeo/boolean.h"
+#include "relgeo/mesh/cgal_conversion.h"
 
 namespace relgeo::tool {
 namespace {
@@ -20,11 +23,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 template <class K>
 CGAL::Surface_mesh<typename K::Point_3> surface(const Mesh_double& m) {
-  CGAL::Surface_mesh<typename K::Point_3> s;
-  std::vector<typename CGAL::Surface_mesh<typename K::Point_3>::Vertex_index> v;
-  for (const auto& p : m.vertices) v.push_back(s.add_vertex(typename K::Point_3(p.x, p.y, p.z)));
-  for (const auto& f : m.faces) s.add_face(v[f[0]], v[f[1]], v[f[2]]);
-  return s;
+  return to_surface_mesh<typename K::Point_3>(m);
 }
 
 Mesh_double doubles(const CGAL::Surface_mesh<CGAL::Epeck::Point_3>& s) {
@@ -79,10 +78,12 @@ Oracle_comparison compare_with_cgal(const Mesh_double& a, const Mesh_double& b, 
   }
   c.cgal_faces = cgal.faces.size();
   if (result.faces.empty()) return c;  // the oracle's figures only
-  if (!cgal.faces.empty()) {
+  if (!cgal.faces.empty()) try {
     const auto r = surface<CGAL::Epick>(result), o = surface<CGAL::Epick>(cgal);
     c.hausdorff = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
         r, o, CGAL::parameters::number_of_points_per_area_unit(4000), CGAL::parameters::number_of_points_per_area_unit(4000));
+  } catch (const Invalid_mesh&) {
+    c.hausdorff = std::nan("");  // a non-manifold mesh (two solids sharing an edge): Surface_mesh cannot hold it
   }
   // The volume of the difference between the two solids, by relgeo's exact
   // Boolean (operands not checked: a rounded output may touch itself).

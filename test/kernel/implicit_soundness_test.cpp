@@ -130,7 +130,9 @@ Family_tally run(const Family_with_signs& f, std::size_t stride) {
       else {
         const double c[3] = {x.point.x, x.point.y, x.point.z};
         for (int axis = 0; axis < 3; ++axis)
-          if (abs(mpq_class(c[axis]) - (*f.points[i])[axis]) > mpq_class(x.error)) {
+          if (!std::isfinite(c[axis]) || abs(mpq_class(c[axis]) - (*f.points[i])[axis]) > mpq_class(x.error)) {
+            std::printf("[ %s ] %s point %zu: coordinate %g (exact %g) with stated error %g\n", K::name().c_str(),
+                        f.w.name.c_str(), i, c[axis], (*f.points[i])[axis].get_d(), x.error);
             ++t.approximation.wrong;
             break;
           }

@@ -41,6 +41,9 @@ Approximate_point_3 approximate_from_enclosure(const Homogeneous_3<NT>& h) {
   for (int axis = 0; axis < 3; ++axis) {
     const Interval c = enclosure_interval(h[axis]) / w;
     const double mid = 0.5 * c.inf() + 0.5 * c.sup();
+    // An overflowed enclosure ([-inf, inf]: NaN midpoint) bounds nothing;
+    // std::max would silently drop the NaN and state a finite error.
+    if (!std::isfinite(mid)) return a;
     *out[axis] = mid;
     error = std::max({error, sub_up(c.sup(), mid), sub_up(mid, c.inf())});
   }

@@ -53,7 +53,12 @@ struct Rounded_implicit_policy {
       double e = 0;
       const FT* c[3] = {&a.point.x, &a.point.y, &a.point.z};
       const double n[3] = {r.point.x, r.point.y, r.point.z};
-      for (int i = 0; i < 3; ++i) e = std::max({e, sub_up(upper_double(*c[i]), n[i]), sub_up(n[i], lower_double(*c[i]))});
+      for (int i = 0; i < 3; ++i) {
+        // An enclosure that overflowed (e.g. [-inf, inf] at huge magnitudes)
+        // has no finite nearest double: no bound (std::max would drop a NaN).
+        if (!std::isfinite(n[i])) e = std::numeric_limits<double>::infinity();
+        else e = std::max({e, sub_up(upper_double(*c[i]), n[i]), sub_up(n[i], lower_double(*c[i]))});
+      }
       r.error = e;
     }
     return r;

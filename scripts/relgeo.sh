@@ -228,6 +228,7 @@ case "${1:-}" in
   experiment) install_missing; run_experiment ;;
   test) install_missing; run_tests ;;
   sanitize) install_missing; run_sanitized_tests ;;
+  fuzz-smoke) install_missing; run_fuzz_smoke ;;
   fuzz) shift; install_missing; run_fuzz_campaign "$@" ;;
-  *) echo "usage: bash scripts/relgeo.sh experiment|test|sanitize|fuzz [SECONDS] [HARNESS...]" >&2; exit 2 ;;
+  *) echo "usage: bash scripts/relgeo.sh experiment|test|sanitize|fuzz-smoke|fuzz [SECONDS] [HARNESS...]" >&2; exit 2 ;;
 esac

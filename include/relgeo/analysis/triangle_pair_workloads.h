@@ -11,7 +11,10 @@
 //  * touching       a shared vertex, a shared edge, a vertex on the other's
 //                   face or edge, an edge through the other's edge;
 //  * coplanar       both in one plane: overlapping, nested, sharing edges or
-//                   vertices, disjoint.
+//                   vertices, disjoint;
+//  * grid           vertices on the integer grid {-2..2}^3: every exact
+//                   degeneracy at once (two vertices on the other's plane,
+//                   an edge in it, shared and collinear edges), unplanned.
 #pragma once
 
 #include <array>
@@ -72,7 +75,7 @@ inline bool is_degenerate(const Triangle_coordinates& t) {
 
 }  // namespace internal_workloads
 
-/// The four families with `n` pairs each.
+/// The five families with `n` pairs each.
 inline std::vector<Triangle_pair_workload> triangle_pair_workloads(std::size_t n, std::uint64_t seed = 1) {
   using namespace internal_workloads;
   std::vector<Triangle_pair_workload> out;
@@ -143,6 +146,18 @@ inline std::vector<Triangle_pair_workload> triangle_pair_workloads(std::size_t n
         case 2: b = {a[small_int(g, 0, 2)], in_plane(), in_plane()}; break;
         default: b = {a[1], a[2], a[0]}; break;  // identical, rotated
       }
+      if (!is_degenerate(a) && !is_degenerate(b)) w.pairs.push_back({a, b});
+    }
+    out.push_back(std::move(w));
+  }
+  {
+    Triangle_pair_workload w{"grid", {}};
+    std::mt19937_64 g(seed + 4);
+    const auto grid_point = [&] {
+      return Vec3{double(small_int(g, -2, 2)), double(small_int(g, -2, 2)), double(small_int(g, -2, 2))};
+    };
+    while (w.pairs.size() < n) {
+      const Triangle_coordinates a{grid_point(), grid_point(), grid_point()}, b{grid_point(), grid_point(), grid_point()};
       if (!is_degenerate(a) && !is_degenerate(b)) w.pairs.push_back({a, b});
     }
     out.push_back(std::move(w));

@@ -597,9 +597,17 @@ class Triangle_overlap_test {
   static bool all_zero(const std::array<Certified_sign, 3>& s) {
     return s[0] == Certified_sign::zero && s[1] == Certified_sign::zero && s[2] == Certified_sign::zero;
   }
+  // Vertex i alone: strictly on the positive side with the others on the
+  // plane or below, or on the plane with both others strictly below. (With
+  // two vertices on the plane, the alone vertex must be the third: its two
+  // edges then cut the plane at those two vertices. Taking a vertex on the
+  // plane, one of its edges would lie in the plane and the cut interval
+  // would shrink to a point; found by fuzz/triangle_intersection.)
   static bool alone_at(const std::array<Certified_sign, 3>& s, int i) {
+    const Certified_sign p = s[(i + 1) % 3], q = s[(i + 2) % 3];
+    if (s[i] == Certified_sign::zero) return p == Certified_sign::negative && q == Certified_sign::negative;
     const auto le0 = [](Certified_sign x) { return x != Certified_sign::positive; };
-    return s[i] != Certified_sign::negative && le0(s[(i + 1) % 3]) && le0(s[(i + 2) % 3]);
+    return s[i] == Certified_sign::positive && le0(p) && le0(q);
   }
   // t's vertices rotated so that t[0] is alone (>= 0, the others <= 0),
   // flipping the other plane (swapping o[1], o[2], which negates t's signs and

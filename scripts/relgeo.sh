@@ -130,7 +130,9 @@ fuzz_build=${RELGEO_FUZZ_BUILD_DIR:-$build-fuzz}
 fuzz_work=${RELGEO_FUZZ_DIR:-$root/.cache/fuzz}
 # Per input: 10 s (a hang is a finding), 2 GB of memory, no single allocation
 # over 1 GB (a reader must not trust a count in a header).
-fuzz_limits=(-timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024)
+# -timeout: a hang, not a slow input (the exact-kernel seeds of loop_limit take
+# seconds under the sanitizers on a loaded machine)
+fuzz_limits=(-timeout=30 -rss_limit_mb=2048 -malloc_limit_mb=1024)
 
 build_fuzzers() {
   command -v clang++ >/dev/null || { log "error: clang++ not found (package clang)"; exit 2; }

@@ -24,24 +24,6 @@ using io::Json;
 
 std::string g3(double v) { return measure_text(v, 3); }
 
-template <class F>
-double largest(const Join_report& r, F&& of) {
-  double m = 0;
-  for (const Join_face_report& f : r.faces) m = std::max(m, of(f));
-  return m;
-}
-
-std::size_t flipped_after(const Join_report& r) {
-  std::size_t n = 0;
-  for (const Join_face_report& f : r.faces) n += f.orientation_after.flipped;
-  return n;
-}
-std::size_t overlaps_after(const Join_report& r) {
-  std::size_t n = 0;
-  for (const Join_face_report& f : r.faces) n += f.overlaps_after;
-  return n;
-}
-
 }  // namespace
 
 Section_report joining_section(const Experiment_context& ctx) {
@@ -72,14 +54,14 @@ Section_report joining_section(const Experiment_context& ctx) {
       const std::string stem = in.name + "_" + method;
       const Join_tool_result r = run_join_tool(o, (dir / (stem + ".off")).string(), true);
       const Join_report& j = r.report;
-      const std::size_t flips = flipped_after(j);
+      const std::size_t flips = total(j, [](const auto& f) { return f.orientation_after.flipped; });
       const double abs_before = largest(j, [](const auto& f) { return f.before.absolute; });
       const double abs_after = largest(j, [](const auto& f) { return f.after.absolute; });
       const double nve_before = largest(j, [](const auto& f) { return f.before.normal_vector; });
       const double nve_after = largest(j, [](const auto& f) { return f.after.normal_vector; });
       table.add_row({in.name, method, std::to_string(j.vertices), std::to_string(j.triangles), g3(abs_before),
                      g3(abs_after), g3(nve_before), g3(nve_after), std::to_string(flips),
-                     std::to_string(overlaps_after(j)), j.watertight_seams ? "closed" : "open",
+                     std::to_string(total(j, [](const auto& f) { return f.overlaps_after; })), j.watertight_seams ? "closed" : "open",
                      r.status + (r.failure.empty() ? "" : " (" + r.failure + ")"), duration_text(j.total_seconds)});
       const auto svg = dir / (stem + ".svg");
       join_picture(r.pictures, in.name + ", " + method + ": " + std::to_string(flipped_in_picture(r.pictures)) +

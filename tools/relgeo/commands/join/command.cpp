@@ -25,20 +25,6 @@ using io::Json;
 
 std::string g3(double v) { return measure_text(v, 3); }
 
-/// The largest value of a face measure over the faces.
-template <class F>
-double largest(const Join_report& r, F&& of) {
-  double m = 0;
-  for (const Join_face_report& f : r.faces) m = std::max(m, of(f));
-  return m;
-}
-template <class F>
-std::size_t total(const Join_report& r, F&& of) {
-  std::size_t n = 0;
-  for (const Join_face_report& f : r.faces) n += of(f);
-  return n;
-}
-
 /// Usage errors of the options (the library checks the files).
 void check_options(const Join_tool_options& o) {
   if (o.surface.empty())

@@ -5,6 +5,7 @@
 // domain for the pictures. Light: no kernel, CGAL or Eigen header.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -49,5 +50,20 @@ struct Join_tool_result {
 /// \throws relgeo::Error as run_join does, Usage_error for a kernel join
 /// does not take.
 Join_tool_result run_join_tool(const Join_tool_options& options, const std::string& output, bool pictures);
+
+/// The largest of a per-face measure over a report's faces (0 for none).
+template <class F>
+double largest(const Join_report& r, F&& of) {
+  double m = 0;
+  for (const Join_face_report& f : r.faces) m = std::max(m, of(f));
+  return m;
+}
+/// The sum of a per-face count over a report's faces.
+template <class F>
+std::size_t total(const Join_report& r, F&& of) {
+  std::size_t n = 0;
+  for (const Join_face_report& f : r.faces) n += of(f);
+  return n;
+}
 
 }  // namespace relgeo::tool

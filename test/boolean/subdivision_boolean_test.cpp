@@ -62,6 +62,7 @@ void expect_valid_control_mesh(const R& r) {
               v.consistently_oriented.passed() && v.valid_tags.passed())
       << v.summary();
   EXPECT_TRUE(v.has_no_defect()) << v.summary();
+  EXPECT_TRUE(v.separated_pieces.passed()) << v.summary();
   // Adjacent pieces are never reported as certified (not implemented).
   EXPECT_EQ(v.adjacent_pieces.status, Check_status::not_checked);
   EXPECT_FALSE(v.is_certified());
@@ -188,7 +189,7 @@ TEST(SubdivisionBoolean, FittingNeverMakesTheResultWorse) {
     const auto r = subdivision_boolean(sphere_a(), sphere_b(), Op::union_of, level, Filtered_exact_kernel{}, o);
     ASSERT_TRUE(r.ok()) << r.failure;
     ASSERT_TRUE(r.distance_to_polyhedral_fitted.measured());
-    EXPECT_GT(r.counts.fitted_vertices, r.counts.curve_vertices);
+    EXPECT_EQ(r.counts.fitted_vertices, r.counts.curve_vertices);  // fit_rings = 0
     if (r.fitted) {
       some_kept = true;
       EXPECT_LT(r.distance_to_polyhedral_fitted.hausdorff(), r.distance_to_polyhedral.hausdorff());
@@ -266,6 +267,19 @@ TEST(SubdivisionValidation, CrossingComponentsAreNeverCertifiedSeparate) {
   EXPECT_GT(v.undecided_pairs.size(), 0u);
   const Subdivision_validation alone = validate_subdivision_solid(icosphere(2, {0, 0, 0}, 1));
   EXPECT_GT(alone.separated_pairs, 0u);
+}
+
+// Far pieces whose hulls overlap at the control level are decided by one
+// level of interval refinement (the hulls shrink around the surface).
+TEST(SubdivisionValidation, RefinementDecidesWhatTheControlHullsCannot) {
+  const auto r = subdivision_boolean(sphere_a(), sphere_b(), Op::union_of, 1);
+  ASSERT_TRUE(r.ok());
+  const Subdivision_validation coarse = validate_subdivision_solid(r.control, {}, {.refinement_levels = 0});
+  const Subdivision_validation refined = validate_subdivision_solid(r.control, {}, {.refinement_levels = 1});
+  EXPECT_EQ(coarse.separated_pieces.status, Check_status::undecided);
+  EXPECT_GT(coarse.undecided_pairs.size(), 0u);
+  EXPECT_EQ(refined.separated_pieces.status, Check_status::pass) << refined.summary();
+  EXPECT_EQ(refined.separated_pairs, coarse.separated_pairs + coarse.separated_pieces.count);
 }
 
 TEST(SubdivisionValidation, DefectsOfTheControlMeshAreReported) {

@@ -61,40 +61,50 @@ inline std::array<double, 3> midpoint(const Interval_point& p) {
   return {(p.x.inf() + p.x.sup()) / 2, (p.y.inf() + p.y.sup()) / 2, (p.z.inf() + p.z.sup()) / 2};
 }
 
-// Candidate separating directions for two far pieces (any direction is
-// sound; these are the likely ones): the coordinate axes, both face
-// normals, their sum, the line between the supports' centres and its part
-// tangent to the mean normal.
-inline bool separated(std::span<const Index> a, std::span<const Index> b, const Triangle& fa, const Triangle& fb,
-                      const std::vector<Interval_point>& p) {
-  const auto normal = [&](const Triangle& t) {
-    const auto x = midpoint(p[t[0]]), y = midpoint(p[t[1]]), z = midpoint(p[t[2]]);
-    const double u[3] = {y[0] - x[0], y[1] - x[1], y[2] - x[2]}, v[3] = {z[0] - x[0], z[1] - x[1], z[2] - x[2]};
-    return std::array<double, 3>{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-  };
-  const auto centre = [&](std::span<const Index> s) {
-    std::array<double, 3> c{0, 0, 0};
-    for (Index v : s) {
-      const auto m = midpoint(p[v]);
-      c[0] += m[0], c[1] += m[1], c[2] += m[2];
+// Whether a plane separates the hulls of two point sets. The direction is
+// searched in double by Gilbert's algorithm (Frank-Wolfe on the distance
+// from the origin to the hull of the differences b - a: each step takes the
+// difference least along the current direction, then the closest point of
+// the segment to it); any direction that separates the midpoints is then
+// certified by separated_along in interval arithmetic (the search itself
+// needs no care: a bad direction only fails to certify).
+inline bool separated(std::span<const Index> a, std::span<const Index> b, const std::vector<Interval_point>& p) {
+  using V = std::array<double, 3>;
+  const auto dot = [](const V& u, const V& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+  const auto extreme = [&](std::span<const Index> s, const V& dir, bool largest) {
+    V best = midpoint(p[s[0]]);
+    double value = dot(dir, best);
+    for (Index i : s) {
+      const V m = midpoint(p[i]);
+      const double x = dot(dir, m);
+      if (largest ? x > value : x < value) best = m, value = x;
     }
-    for (double& x : c) x /= static_cast<double>(s.size());
-    return c;
+    return best;
   };
-  const auto unit = [](std::array<double, 3> v) {
-    const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (l > 0) v[0] /= l, v[1] /= l, v[2] /= l;
-    return v;
-  };
-  const auto na = unit(normal(fa)), nb = unit(normal(fb));
-  const auto ca = centre(a), cb = centre(b);
-  const std::array<double, 3> d{cb[0] - ca[0], cb[1] - ca[1], cb[2] - ca[2]};
-  const auto n = unit({na[0] + nb[0], na[1] + nb[1], na[2] + nb[2]});
-  const double along = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
-  const std::array<double, 3> tangent{d[0] - along * n[0], d[1] - along * n[1], d[2] - along * n[2]};
-  for (const auto& axis : {std::array<double, 3>{1, 0, 0}, std::array<double, 3>{0, 1, 0}, std::array<double, 3>{0, 0, 1},
-                           na, nb, n, d, tangent})
-    if (std::isfinite(axis[0] + axis[1] + axis[2]) && separated_along(axis, a, b, p)) return true;
+  V ca{0, 0, 0}, cb{0, 0, 0};
+  for (Index i : a) {
+    const V m = midpoint(p[i]);
+    ca = {ca[0] + m[0], ca[1] + m[1], ca[2] + m[2]};
+  }
+  for (Index i : b) {
+    const V m = midpoint(p[i]);
+    cb = {cb[0] + m[0], cb[1] + m[1], cb[2] + m[2]};
+  }
+  const double na = static_cast<double>(a.size()), nb = static_cast<double>(b.size());
+  V x{cb[0] / nb - ca[0] / na, cb[1] / nb - ca[1] / na, cb[2] / nb - ca[2] / na};
+  for (int step = 0; step < 48; ++step) {
+    const double xx = dot(x, x);
+    if (!(xx > 0) || !std::isfinite(xx)) return false;  // the hulls (nearly) meet
+    // The difference least along x: the lowest b minus the highest a.
+    const V lo_b = extreme(b, x, false), hi_a = extreme(a, x, true);
+    const V s{lo_b[0] - hi_a[0], lo_b[1] - hi_a[1], lo_b[2] - hi_a[2]};
+    if (dot(x, s) > 0) return separated_along(x, a, b, p);  // every difference is above 0 along x
+    const V d{x[0] - s[0], x[1] - s[1], x[2] - s[2]};
+    const double dd = dot(d, d);
+    if (!(dd > 0)) return false;
+    const double t = std::clamp(dot(x, d) / dd, 0.0, 1.0);
+    x = {x[0] - t * d[0], x[1] - t * d[1], x[2] - t * d[2]};
+  }
   return false;
 }
 
@@ -102,8 +112,9 @@ inline bool separated(std::span<const Index> a, std::span<const Index> b, const 
 // on demand, with the supports of the faces asked about.
 class Refinement_ladder {
  public:
-  Refinement_ladder(const Triangle_mesh<Point_3<double>>& control, const Mesh_topology& t, const Loop_options& loop)
-      : loop_(loop) {
+  Refinement_ladder(const Triangle_mesh<Point_3<double>>& control, const Mesh_topology& t, const Loop_options& loop,
+                    std::size_t budget)
+      : loop_(loop), budget_(budget) {
     Level l;
     l.mesh.faces = control.faces;
     l.mesh.tags = control.tags;
@@ -118,9 +129,13 @@ class Refinement_ladder {
   // without a common vertex have none either, and their ring distance
   // doubles per level).
   bool disjoint(unsigned l, Index f, Index g, unsigned max_level) {
+    if (l > 0) {  // refinement's tests count against the budget
+      if (budget_ == 0) return false;
+      --budget_;
+    }
     const std::vector<Index>&a = support(l, f), &b = support(l, g);
     const Level& lv = levels_[l];
-    if (!share_a_point(a, b) && separated(a, b, lv.mesh.faces[f], lv.mesh.faces[g], lv.mesh.vertices)) return true;
+    if (!share_a_point(a, b) && separated(a, b, lv.mesh.vertices)) return true;
     if (l >= max_level || !refine_to(l + 1)) return false;
     for (Index i = 0; i < 4; ++i)
       for (Index j = 0; j < 4; ++j)
@@ -162,6 +177,7 @@ class Refinement_ladder {
     return true;
   }
   Loop_options loop_;
+  std::size_t budget_;  // pair tests left
   std::vector<Level> levels_;
 };
 
@@ -210,7 +226,7 @@ inline Subdivision_validation validate_subdivision_solid(const Triangle_mesh<Poi
     internal::not_checked(r.adjacent_pieces, adjacent_note);
     return r;
   }
-  internal::Refinement_ladder ladder(control, t, loop);
+  internal::Refinement_ladder ladder(control, t, loop, options.refinement_budget);
   std::vector<Box_3> boxes(control.faces.size());
   for (Index f = 0; f < boxes.size(); ++f)
     for (Index v : ladder.support(0, f)) boxes[f].extend(control.vertices[v].x, control.vertices[v].y, control.vertices[v].z);
@@ -221,13 +237,18 @@ inline Subdivision_validation validate_subdivision_solid(const Triangle_mesh<Poi
     if (internal::share_a_point(ladder.support(0, f), ladder.support(0, g))) ++r.adjacent_pairs;
     else far.emplace_back(std::min(f, g), std::max(f, g));
   });
-  std::size_t undecided = 0;
+  // Iterative deepening: every far pair at the control level, those left at
+  // one level of refinement, and so on, so that the budget goes to the
+  // hardest pairs last.
+  for (unsigned level = 0; level <= options.refinement_levels && !far.empty(); ++level) {
+    std::vector<std::pair<Index, Index>> left;
+    for (const auto& p : far)
+      if (ladder.disjoint(0, p.first, p.second, level)) ++r.separated_pairs;
+      else left.push_back(p);
+    far = std::move(left);
+  }
+  const std::size_t undecided = far.size();
   for (const auto& [f, g] : far) {
-    if (ladder.disjoint(0, f, g, options.refinement_levels)) {
-      ++r.separated_pairs;
-      continue;
-    }
-    ++undecided;
     if (r.undecided_pairs.size() < options.max_listed) r.undecided_pairs.emplace_back(f, g);
     internal::record(r.separated_pieces, {Mesh_defect::undecided, {f, g}}, options.max_listed);
   }

@@ -80,6 +80,21 @@ struct Face_origin {
   friend bool operator==(const Face_origin&, const Face_origin&) = default;
 };
 
+/// Where an output vertex lies on an operand's input mesh: at one of its
+/// vertices, inside one of its edges, inside one of its faces, or not on it.
+/// Exact: read from the narrow phase's exact classification, not from
+/// rounded coordinates.
+struct Surface_location {
+  enum class Kind : std::uint8_t { none, vertex, edge, face };
+  Kind kind = Kind::none;
+  /// vertex: {v, invalid}; edge: its two ends; face: the face's first two
+  /// vertices (see `face`).
+  std::array<Index, 2> vertices{invalid_index, invalid_index};
+  /// face: the face; edge: a face containing the edge; vertex: invalid.
+  Index face = invalid_index;
+  friend bool operator==(const Surface_location&, const Surface_location&) = default;
+};
+
 /// Seconds spent in each phase.
 struct Boolean_timing {
   double check = 0, broad_phase = 0, narrow_phase = 0, retriangulation = 0, labelling = 0, assembly = 0,
@@ -117,6 +132,8 @@ struct Boolean_result {
   double rounding_error = 0;
   /// Per output face: operand and input face.
   std::vector<Face_origin> provenance;
+  /// Per output vertex: where it lies on A (index 0) and on B (index 1).
+  std::vector<std::array<Surface_location, 2>> vertex_locations;
   /// Fail-safe perturbations (thesis eq. 5.3) applied to decide pairs:
   /// the largest rho, and how many.
   double largest_perturbation = 0;

@@ -537,6 +537,7 @@ class Boolean_engine {
         r.mesh.faces.push_back({use(tri[0]), use(tri[1]), use(tri[2])});
         r.provenance.push_back({static_cast<std::uint8_t>(m), pieces_[m].input_face[t]});
       }
+    locate_output_vertices(new_index, r);
     // The curves that are edges of the output are its creases.
     Edge_set output_edges;
     for (const Triangle& f : r.mesh.faces)
@@ -548,6 +549,39 @@ class Boolean_engine {
           output_edges.contains(new_index[e.a], new_index[e.b]))
         creases.push_back(Edge::of(new_index[e.a], new_index[e.b]));
     r.mesh.tags.set_creases(std::move(creases));
+  }
+
+  // Where each output vertex lies on A and on B: input vertices are at
+  // themselves; every intersection point was located exactly on its two
+  // faces (the most specific location wins: vertex, then edge, then face).
+  void locate_output_vertices(const std::vector<Index>& new_index, Result& r) const {
+    using Kind = Surface_location::Kind;
+    r.vertex_locations.assign(r.mesh.vertices.size(), {});
+    const auto set = [&](Index out, int m, const Surface_location& l) {
+      Surface_location& x = r.vertex_locations[out][m];
+      if (x.kind == Kind::none || l.kind < x.kind) x = l;
+    };
+    for (int m = 0; m < 2; ++m)
+      for (Index v = 0; v < mesh_[m]->vertices.size(); ++v)
+        if (const Index g = new_index[offset_[m] + v]; g != invalid_index) set(g, m, {Kind::vertex, {v, invalid_index}});
+    for (const Located_point& l : located_) {
+      const Index g = new_index[find_const(l.point)];
+      if (g == invalid_index) continue;
+      for (int m = 0; m < 2; ++m) {
+        const Index f = l.face[m];
+        const Triangle& t = mesh_[m]->faces[f];
+        const Triangle_location& w = l.where[m];
+        switch (w.kind) {
+          case Triangle_location::Kind::vertex: set(g, m, {Kind::vertex, {t[w.index], invalid_index}}); break;
+          case Triangle_location::Kind::edge: set(g, m, {Kind::edge, {t[w.index], t[(w.index + 1) % 3]}, f}); break;
+          case Triangle_location::Kind::interior: set(g, m, {Kind::face, {t[0], t[1]}, f}); break;
+        }
+      }
+    }
+  }
+  Index find_const(Index x) const {
+    while (parent_[x] != x) x = parent_[x];
+    return x;
   }
 
   std::array<const Mesh*, 2> mesh_;
@@ -585,6 +619,7 @@ Boolean_result<K> with_exact_vertices(Boolean_result<Filtered_exact_kernel>&& r)
   out.mesh = std::move(r.mesh);
   out.rounding_error = r.rounding_error;
   out.provenance = std::move(r.provenance);
+  out.vertex_locations = std::move(r.vertex_locations);
   out.largest_perturbation = r.largest_perturbation;
   out.perturbations = r.perturbations;
   out.counts = r.counts;

@@ -1,0 +1,339 @@
+// test/boolean/subdivision_boolean_test.cpp — Booleans of Loop subdivision
+// solids (relgeo/boolean/subdivision_boolean.h): the result is a valid Loop
+// control mesh with its curves tagged, its limit surface approaches the
+// polyhedral result as the level grows, fitting never makes it worse, the
+// validation certifies what it claims and refuses to certify what is wrong,
+// bad operands get typed errors.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "boolean_inputs.h"
+#include "relgeo/boolean/subdivision_boolean.h"
+#include "relgeo/kernel.h"
+#include "relgeo/mesh/mesh_topology.h"
+#include "relgeo/subdivision/loop_features.h"
+
+namespace relgeo::test {
+namespace {
+
+using Op = Boolean_operation;
+
+Mesh sphere_a() { return icosphere(1); }
+Mesh sphere_b() { return rigidly_moved(icosphere(1), 0.3, 0.2, {0.7, 0.2, 0.1}); }
+
+// A cube of side 2 centred at the origin, its 12 edges creases and its 8
+// vertices corners: a creased subdivision solid.
+Mesh creased_cube() {
+  Mesh m = cube(-1, -1, -1, 2);
+  std::vector<Edge> creases;
+  const Mesh_topology t = Mesh_topology::build(m);
+  for (Index e = 0; e < t.number_of_edges(); ++e) {
+    const Edge ends = t.edge_vertices(e);
+    const auto& p = m.vertices[ends.a];
+    const auto& q = m.vertices[ends.b];
+    const int same = (p.x == q.x) + (p.y == q.y) + (p.z == q.z);
+    if (same == 2) creases.push_back(ends);  // an edge of the cube, not a diagonal
+  }
+  m.tags.set_creases(creases);
+  std::vector<Index> corners(m.vertices.size());
+  for (Index v = 0; v < corners.size(); ++v) corners[v] = v;
+  m.tags.set_corners(corners);
+  return m;
+}
+
+// Every curve vertex is on a crease, and every polyhedral curve edge is a
+// crease of the result.
+template <class R>
+void expect_curves_tagged(const R& r) {
+  for (const Edge& e : r.polyhedral.mesh.tags.creases()) EXPECT_TRUE(r.control.tags.is_crease(e.a, e.b)) << e.a << "-" << e.b;
+  const Mesh_topology t = Mesh_topology::build(r.control);
+  const Loop_features f = classify_loop_features(t, r.control.tags);
+  for (Index v : r.curve_vertices) EXPECT_GE(f.crease_degree[v], 2) << "curve vertex " << v;
+}
+
+template <class R>
+void expect_valid_control_mesh(const R& r) {
+  const Subdivision_validation& v = r.validation;
+  EXPECT_TRUE(v.closed.passed() && v.edge_manifold.passed() && v.vertex_manifold.passed() &&
+              v.consistently_oriented.passed() && v.valid_tags.passed())
+      << v.summary();
+  EXPECT_TRUE(v.has_no_defect()) << v.summary();
+  // Adjacent pieces are never reported as certified (not implemented).
+  EXPECT_EQ(v.adjacent_pieces.status, Check_status::not_checked);
+  EXPECT_FALSE(v.is_certified());
+}
+
+// ---- every certified kernel ----------------------------------------------------
+
+template <class K>
+class SubdivisionBoolean : public ::testing::Test {};
+using Kernels = ::testing::Types<Filtered_exact_kernel, Exact_kernel, Failsafe_kernel<double>>;
+TYPED_TEST_SUITE(SubdivisionBoolean, Kernels);
+
+// Two offset Loop spheres: the result validates, its curves are tagged, and
+// its limit surface approaches the polyhedral result at least 2x per level
+// from level 1 to 3 (measured: about 4x, the limit mesh's O(h^2)).
+TYPED_TEST(SubdivisionBoolean, SpheresUnionConvergesWithTheLevel) {
+  double previous = std::numeric_limits<double>::infinity();
+  for (unsigned level = 1; level <= 3; ++level) {
+    const auto r = subdivision_boolean(sphere_a(), sphere_b(), Op::union_of, level, TypeParam{});
+    if (!r.ok()) {  // only the fail-safe kernel may fail, and then it says where
+      EXPECT_TRUE((std::is_same_v<TypeParam, Failsafe_kernel<double>>)) << r.failure;
+      EXPECT_NE(r.failure.find("polyhedral Boolean: "), std::string::npos) << r.failure;
+      EXPECT_FALSE(r.polyhedral.ok());
+      continue;
+    }
+    ASSERT_TRUE(r.polyhedral.validation.is_valid_solid()) << r.polyhedral.validation.summary();
+    EXPECT_GT(r.counts.curve_vertices, 10u);
+    expect_curves_tagged(r);
+    expect_valid_control_mesh(r);
+    const double d = r.distance_to_polyhedral.hausdorff();
+    ASSERT_TRUE(std::isfinite(d));
+    EXPECT_LT(d, 0.05);
+    if (std::isfinite(previous)) {
+      EXPECT_LE(2 * d, previous) << "level " << level;
+    }
+    previous = d;
+  }
+}
+
+// ---- the filtered exact kernel (default) -----------------------------------------
+
+TEST(SubdivisionBoolean, EveryOperationGivesAValidControlMesh) {
+  for (Op op : {Op::union_of, Op::intersection, Op::difference}) {
+    const auto r = subdivision_boolean(sphere_a(), sphere_b(), op, 1);
+    ASSERT_TRUE(r.ok()) << to_string(op) << ": " << r.failure;
+    EXPECT_TRUE(r.polyhedral.validation.is_valid_solid()) << to_string(op);
+    expect_curves_tagged(r);
+    expect_valid_control_mesh(r);
+    EXPECT_LT(r.distance_to_polyhedral.hausdorff(), 0.05) << to_string(op);
+  }
+}
+
+// The control mesh's vertices off the curves are the operands' own refined
+// control points: mapping moves only what the curves cut.
+TEST(SubdivisionBoolean, VerticesAwayFromTheCurvesAreTheOperandsControlPoints) {
+  const unsigned level = 1;
+  const auto r = subdivision_boolean(sphere_a(), sphere_b(), Op::union_of, level);
+  ASSERT_TRUE(r.ok());
+  const Mesh ra = loop_subdivide(sphere_a(), level), rb = loop_subdivide(sphere_b(), level);
+  std::size_t checked = 0;
+  for (Index v = 0; v < r.unfitted.vertices.size(); ++v) {
+    if (std::binary_search(r.curve_vertices.begin(), r.curve_vertices.end(), v)) continue;
+    const auto& where = r.polyhedral.vertex_locations[v];
+    for (int m = 0; m < 2; ++m)
+      if (where[m].kind == Surface_location::Kind::vertex) {
+        EXPECT_EQ(r.unfitted.vertices[v], (m == 0 ? ra : rb).vertices[where[m].vertices[0]]);
+        ++checked;
+      }
+  }
+  EXPECT_GT(checked, 100u);
+}
+
+// The polyhedral result says where each vertex lies on each limit mesh:
+// every vertex somewhere, input vertices exactly, edge and face points on
+// their edge and face (to the rounding of the output).
+TEST(SubdivisionBoolean, PolyhedralVerticesAreLocatedOnTheLimitMeshes) {
+  const unsigned level = 1;
+  const auto r = subdivision_boolean(sphere_a(), sphere_b(), Op::intersection, level);
+  ASSERT_TRUE(r.ok());
+  // The limit meshes as the Boolean computed them (refined, then pushed to
+  // the limit: loop_limit_mesh's fused last step rounds differently).
+  const std::array<Mesh, 2> limit{internal::operand_at_level(sphere_a(), level, {}).limit,
+                                  internal::operand_at_level(sphere_b(), level, {}).limit};
+  const auto& out = r.polyhedral.mesh;
+  ASSERT_EQ(r.polyhedral.vertex_locations.size(), out.vertices.size());
+  std::size_t on_both = 0;
+  for (Index v = 0; v < out.vertices.size(); ++v) {
+    const auto& where = r.polyhedral.vertex_locations[v];
+    EXPECT_TRUE(where[0].kind != Surface_location::Kind::none || where[1].kind != Surface_location::Kind::none);
+    on_both += where[0].kind != Surface_location::Kind::none && where[1].kind != Surface_location::Kind::none;
+    for (int m = 0; m < 2; ++m) {
+      const Surface_location& l = where[m];
+      const Mesh& lm = limit[m];
+      switch (l.kind) {
+        case Surface_location::Kind::vertex: EXPECT_EQ(out.vertices[v], lm.vertices[l.vertices[0]]); break;
+        case Surface_location::Kind::edge: {
+          Mesh segment;
+          segment.vertices = {lm.vertices[l.vertices[0]], lm.vertices[l.vertices[1]], lm.vertices[l.vertices[1]]};
+          segment.faces = {{0, 1, 2}};
+          EXPECT_LT(Point_mesh_distance(segment)(out.vertices[v]), 1e-14);
+          break;
+        }
+        case Surface_location::Kind::face: {
+          Mesh face;
+          for (Index c : lm.faces[l.face]) face.vertices.push_back(lm.vertices[c]);
+          face.faces = {{0, 1, 2}};
+          EXPECT_LT(Point_mesh_distance(face)(out.vertices[v]), 1e-14);
+          break;
+        }
+        case Surface_location::Kind::none: break;
+      }
+    }
+  }
+  EXPECT_EQ(on_both, r.counts.curve_vertices);
+}
+
+// Fitting (eq. 5.4) moves control points near the curves and is kept only
+// when it brings the limit surface closer to the polyhedral result.
+TEST(SubdivisionBoolean, FittingNeverMakesTheResultWorse) {
+  Subdivision_boolean_options o;
+  o.fit = true;
+  bool some_kept = false;
+  for (unsigned level = 0; level <= 2; ++level) {
+    const auto r = subdivision_boolean(sphere_a(), sphere_b(), Op::union_of, level, Filtered_exact_kernel{}, o);
+    ASSERT_TRUE(r.ok()) << r.failure;
+    ASSERT_TRUE(r.distance_to_polyhedral_fitted.measured());
+    EXPECT_GT(r.counts.fitted_vertices, r.counts.curve_vertices);
+    if (r.fitted) {
+      some_kept = true;
+      EXPECT_LT(r.distance_to_polyhedral_fitted.hausdorff(), r.distance_to_polyhedral.hausdorff());
+      EXPECT_NE(r.control.vertices, r.unfitted.vertices);
+    } else {
+      EXPECT_GE(r.distance_to_polyhedral_fitted.hausdorff(), r.distance_to_polyhedral.hausdorff());
+      EXPECT_EQ(r.control.vertices, r.unfitted.vertices);
+    }
+    EXPECT_EQ(r.control.faces, r.unfitted.faces);
+    EXPECT_EQ(r.control.tags, r.unfitted.tags);
+  }
+  EXPECT_TRUE(some_kept) << "the fitting never helped on these spheres";
+}
+
+// Nested, disjoint and identical operands: no curve; the result is an
+// operand's refined control mesh (or both), exact.
+TEST(SubdivisionBoolean, NestedDisjointAndIdenticalOperands) {
+  const Mesh big = icosphere(1, {0, 0, 0}, 2), small = icosphere(1, {0.1, 0, 0}, 0.5), far = icosphere(1, {5, 0, 0});
+  const Mesh big1 = loop_subdivide(big, 1);
+  {
+    const auto r = subdivision_boolean(big, small, Op::union_of, 1);
+    ASSERT_TRUE(r.ok()) << r.failure;
+    EXPECT_EQ(r.counts.curve_vertices, 0u);
+    EXPECT_EQ(r.control.faces.size(), big1.faces.size());
+    EXPECT_LT(r.distance_to_polyhedral.hausdorff(), 0.05);
+  }
+  {
+    const auto r = subdivision_boolean(big, small, Op::difference, 1);
+    ASSERT_TRUE(r.ok()) << r.failure;
+    EXPECT_EQ(r.control.faces.size(), big1.faces.size() + loop_subdivide(small, 1).faces.size());
+    expect_valid_control_mesh(r);
+  }
+  {
+    const auto r = subdivision_boolean(big, far, Op::union_of, 1);
+    ASSERT_TRUE(r.ok()) << r.failure;
+    EXPECT_EQ(r.counts.curve_vertices, 0u);
+    EXPECT_EQ(r.control.faces.size(), 2 * big1.faces.size());
+    expect_valid_control_mesh(r);
+    EXPECT_EQ(subdivision_boolean(big, far, Op::intersection, 1).control.faces.size(), 0u);
+  }
+  {
+    const auto r = subdivision_boolean(big, big, Op::union_of, 1);
+    ASSERT_TRUE(r.ok()) << r.failure;
+    EXPECT_EQ(r.control.faces.size(), big1.faces.size());
+    EXPECT_EQ(r.control.vertices.size(), big1.vertices.size());
+    EXPECT_LT(r.distance_to_polyhedral.hausdorff(), 0.05);
+  }
+}
+
+// A creased cube with a sphere: the cube's creases and corners survive
+// where the cube is kept, beside the curves.
+TEST(SubdivisionBoolean, CreasedCubeKeepsItsCreases) {
+  const Mesh c = creased_cube(), s = icosphere(2, {1.2, 0.9, 0.7}, 0.8);
+  const auto r = subdivision_boolean(c, s, Op::difference, 1);
+  ASSERT_TRUE(r.ok()) << r.failure;
+  expect_curves_tagged(r);
+  expect_valid_control_mesh(r);
+  EXPECT_GT(r.control.tags.creases().size(), r.polyhedral.mesh.tags.creases().size());
+  EXPECT_EQ(r.control.tags.corners().size(), 7u);  // the corner inside the sphere is cut away
+  EXPECT_LT(r.distance_to_polyhedral.hausdorff(), 0.1);
+}
+
+// ---- the validation -----------------------------------------------------------------
+
+// Two spheres crossing each other in one control mesh: their pieces meet,
+// so the separation of far pieces must not pass (and does on each sphere
+// alone).
+TEST(SubdivisionValidation, CrossingComponentsAreNeverCertifiedSeparate) {
+  const Mesh a = icosphere(2), b = icosphere(2, {0.5, 0, 0});
+  Mesh both = a;
+  for (const auto& p : b.vertices) both.vertices.push_back(p);
+  for (Triangle t : b.faces) both.faces.push_back({t[0] + Index(a.vertices.size()), t[1] + Index(a.vertices.size()), t[2] + Index(a.vertices.size())});
+  const Subdivision_validation v = validate_subdivision_solid(both);
+  EXPECT_EQ(v.separated_pieces.status, Check_status::undecided) << v.summary();
+  EXPECT_GT(v.undecided_pairs.size(), 0u);
+  const Subdivision_validation alone = validate_subdivision_solid(icosphere(2, {0, 0, 0}, 1));
+  EXPECT_GT(alone.separated_pairs, 0u);
+}
+
+TEST(SubdivisionValidation, DefectsOfTheControlMeshAreReported) {
+  Mesh open = icosphere(1);
+  open.faces.pop_back();
+  const Subdivision_validation v = validate_subdivision_solid(open);
+  EXPECT_EQ(v.closed.status, Check_status::fail);
+  EXPECT_EQ(v.separated_pieces.status, Check_status::not_checked);
+  Mesh flipped = icosphere(1);
+  std::swap(flipped.faces[0][1], flipped.faces[0][2]);
+  EXPECT_EQ(validate_subdivision_solid(flipped).consistently_oriented.status, Check_status::fail);
+  Mesh bad_tag = icosphere(1);
+  bad_tag.tags.add_crease(0, Index(bad_tag.vertices.size() - 1));  // not an edge
+  EXPECT_EQ(validate_subdivision_solid(bad_tag).valid_tags.status, Check_status::fail);
+}
+
+// The symmetric difference touches itself along the curves: refused.
+TEST(SubdivisionBoolean, SymmetricDifferenceIsRefused) {
+  try {
+    (void)subdivision_boolean(sphere_a(), sphere_b(), Op::symmetric_difference, 1);
+    ADD_FAILURE() << "accepted";
+  } catch (const Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("A - B and B - A"), std::string::npos) << e.what();
+  }
+}
+
+// ---- bad operands -----------------------------------------------------------------------
+
+TEST(SubdivisionBoolean, BadOperandsAreRefusedWithTypedErrors) {
+  Mesh open = sphere_a();
+  open.faces.pop_back();
+  try {
+    (void)subdivision_boolean(open, sphere_b(), Op::union_of, 1);
+    ADD_FAILURE() << "open operand accepted";
+  } catch (const Invalid_operand& e) {
+    EXPECT_EQ(e.operand(), "A");
+    EXPECT_NE(std::string(e.what()).find("boundary_edge"), std::string::npos) << e.what();
+  }
+  Mesh nan = sphere_b();
+  nan.vertices[3].y = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW((void)subdivision_boolean(sphere_a(), nan, Op::union_of, 1), Invalid_operand);
+  Mesh flipped = sphere_a();
+  std::swap(flipped.faces[5][0], flipped.faces[5][1]);
+  EXPECT_THROW((void)subdivision_boolean(flipped, sphere_b(), Op::union_of, 1), Invalid_operand);
+  // Two spheres crossing in one operand: its limit mesh self-intersects.
+  Mesh crossing = icosphere(1);
+  const Mesh other = icosphere(1, {0.5, 0, 0});
+  const Index n = Index(crossing.vertices.size());
+  for (const auto& p : other.vertices) crossing.vertices.push_back(p);
+  for (Triangle t : other.faces) crossing.faces.push_back({t[0] + n, t[1] + n, t[2] + n});
+  try {
+    (void)subdivision_boolean(crossing, sphere_b(), Op::union_of, 1);
+    ADD_FAILURE() << "self-intersecting operand accepted";
+  } catch (const Invalid_operand& e) {
+    EXPECT_EQ(e.operand(), "A (limit mesh at level 1)");
+  }
+}
+
+// The naive kernel: whatever its arithmetic gives, never a crash; the
+// report says what it got.
+TEST(SubdivisionBoolean, NaiveKernelNeverCrashes) {
+  const auto r = subdivision_boolean(sphere_a(), sphere_b(), Op::union_of, 1, Naive_kernel<double>{});
+  if (r.ok()) {
+    EXPECT_EQ(r.control.faces.size(), r.polyhedral.mesh.faces.size());
+  } else {
+    EXPECT_FALSE(r.failure.empty());
+  }
+}
+
+}  // namespace
+}  // namespace relgeo::test

@@ -39,6 +39,7 @@ struct Solid_pair_case {
   std::string name, file;
   Mesh_double a, b;
   Boolean_operation op = Boolean_operation::union_of;
+  double azimuth_deg = 35;  ///< of the pictures' view direction
 };
 
 // The cube with its 12 edges tagged as creases and its 8 corners as corners:
@@ -56,13 +57,14 @@ Mesh_double creased_cube(double x0, double y0, double z0, double s) {
 std::vector<Solid_pair_case> solid_pair_cases() {
   return {
       {"Loop spheres u", "loop_spheres_union", icosphere(1),
-       rigidly_moved(icosphere(1), 0.3, 0.2, {0.5, 0.3, 0.2})},
+       rigidly_moved(icosphere(1), 0.3, 0.2, {0.5, 0.3, 0.2}), Boolean_operation::union_of, -55},
       {"creased cube u torus", "creased_cube_union_torus", creased_cube(-0.6, -0.6, -0.6, 1.2),
        rigidly_moved(torus(0.8, 0.3, 12, 6), 0.2, 0.35, {0.02, 0.03, 0.1})},
   };
 }
 
 std::string g3(double v) { return std::isnan(v) ? "-" : measure_text(v, 3); }
+std::string ms(double seconds) { return format_fixed(1e3 * seconds, 2); }
 
 Json timing_json(const Subdivision_boolean_timing& t) {
   return {{"limit_meshes", t.limit_meshes}, {"boolean", t.boolean},   {"mapping", t.mapping},
@@ -82,8 +84,7 @@ Json control_boolean_row(const Solid_pair_case& c, const std::string& kernel, Te
   }
   t.add_row({c.name, "0", kernel, status.substr(0, 40), run.ok ? std::to_string(run.output.faces.size()) : "-",
              run.ok ? std::to_string(run.output.tags.creases().size()) : "-", "-", "-", "-", "-",
-             run.ok ? run.validation.summary() : "-", format_fixed(run.time.total(), 3), "-",
-             format_fixed(run.time.total(), 3)});
+             run.ok ? run.validation.summary() : "-", ms(run.time.total()), "-", ms(run.time.total())});
   Json j;
   j["case"] = c.name;
   j["level"] = 0;
@@ -105,7 +106,7 @@ Section_report subdivision_boolean_section(const Experiment_context& ctx) {
   const unsigned max_level = ctx.quick ? 2 : 3;
   const unsigned picture_extra_levels = 2;
   Text_table t({"case", "level", "kernel", "status", "faces", "curve edges", "d", "d fitted", "kept", "ratio",
-                "validation", "time s", "layer s", "boolean s"});
+                "validation", "time ms", "layer ms", "boolean ms"});
   t.set_left_columns(4);
   Json rows = Json::array();
   std::vector<Picture> pictures;
@@ -146,8 +147,8 @@ Section_report subdivision_boolean_section(const Experiment_context& ctx) {
                    run.ok ? std::to_string(run.control.faces.size()) : "-",
                    run.ok ? std::to_string(run.counts.curve_edges) : "-", g3(d), g3(df),
                    !run.ok ? "-" : run.fitted ? "fitted" : "unfitted", g3(ratio),
-                   run.ok ? run.validation.summary() : "-", format_fixed(run.time.total(), 3),
-                   format_fixed(run.time.layer(), 3), format_fixed(run.time.boolean, 3)});
+                   run.ok ? run.validation.summary() : "-", ms(run.time.total()), ms(run.time.layer()),
+                   ms(run.time.boolean)});
         Json j;
         j["case"] = c.name;
         j["level"] = level;
@@ -171,6 +172,7 @@ Section_report subdivision_boolean_section(const Experiment_context& ctx) {
           ctx.progress(c.name + ": picture of level " + std::to_string(level));
           Render_options ro;
           ro.highlight_creases = true;
+          ro.azimuth_deg = c.azimuth_deg;
           const auto path = ctx.section_dir() / (c.file + "_level" + std::to_string(level) + ".png");
           io::write_png(path.string(), render_mesh(finer_limit_mesh(run.control, picture_extra_levels, {}), ro));
           pictures.push_back({ctx.relative(path), c.name + ", level " + std::to_string(level) +

@@ -71,7 +71,14 @@ relgeo_tool_test(boolean_levels_fit 0 STDOUT_JSON
 relgeo_tool_test(boolean_levels_exact 0 STDOUT_JSON
   ARGS boolean --levels 1 --kernel exact ${_ico} ${_ico_moved} --op difference --format json
   STDOUT_MATCHES "\"kernel\": \"exact\"," "\"status\": \"ok\"," "\"closed\": {[^}]*\"status\": \"pass\"")
+# A creased operand (the creased box of test/data with its tags): its creases
+# and corners outside the other solid stay tagged in the result.
+relgeo_tool_test(boolean_levels_creased_operand 0 STDOUT_JSON
+  ARGS boolean --levels 1 ${PROJECT_SOURCE_DIR}/test/data/creased_box.off ${_ico_moved}
+       --tags-a ${PROJECT_SOURCE_DIR}/test/data/creased_box.tags --format json
+  STDOUT_MATCHES "\"status\": \"ok\"," "\"corners\": [1-9]" "\"valid_tags\": {[^}]*\"status\": \"pass\"")
 # Bad operands and usage: exit 2, one line.
+relgeo_tool_test(boolean_tags_without_levels 2 ARGS boolean ${_cube} ${_offset} --tags-a ${PROJECT_SOURCE_DIR}/test/data/creased_box.tags)
 relgeo_tool_test(boolean_levels_open_operand 2 ARGS boolean --levels 1 ${_ico} ${_data}/cube_open.off
   STDERR_MATCHES "operand B")
 relgeo_tool_test(boolean_levels_cgal_kernel 2 ARGS boolean --levels 1 --kernel cgal-epick ${_ico} ${_ico_moved})

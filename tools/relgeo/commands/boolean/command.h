@@ -15,6 +15,7 @@ struct Boolean_command_options {
   std::string op = "union";       ///< union | intersection | difference | xor
   std::string kernel = "filtered";
   std::string a, b;               ///< operand mesh files (OFF, OBJ, PLY, STL)
+  std::string tags_a, tags_b;     ///< with --levels: the operands' crease/corner tag files
   std::string output;             ///< result mesh file, empty for none
   std::string tags_output;        ///< the result's crease tags (the intersection curves) as a side file
   std::string polyhedral_output;  ///< with --levels: the Boolean of the two limit meshes

@@ -32,7 +32,8 @@ std::string boolean_help_footer() {
          "validation says so and where.\n"
          "A symmetric difference (xor) touches itself along the intersection curves: its non-manifold edges are "
          "expected.\n"
-         "\nWith --levels K (K >= 1) the operands are Loop control meshes and the Boolean is that of their limit "
+         "\nWith --levels K (K >= 1) the operands are Loop control meshes (their crease and corner tags from "
+         "--tags-a and --tags-b: 'crease a b' and 'corner v' lines) and the Boolean is that of their limit "
          "surfaces (relgeo::subdivision_boolean, thesis Ch. 5): the Boolean of the two limit meshes at level K (the "
          "polyhedral result, --polyhedral-output), its intersection curves mapped to the level-K control meshes, "
          "which are cut and merged along them into one control mesh with the curves tagged as creases (--output, "
@@ -73,6 +74,8 @@ void declare_boolean_options(CLI::App& cmd, Boolean_command_options& o) {
   cmd.add_flag("--skip-self-intersection-check", o.skip_self_intersection_check,
                "do not test the operands for self-intersections (the other checks still run)");
   cmd.add_option("--levels", o.levels, "K >= 1: the Boolean of two Loop subdivision solids at level K")->type_name("K");
+  cmd.add_option("--tags-a", o.tags_a, "with --levels: crease/corner tag file of A")->type_name("FILE");
+  cmd.add_option("--tags-b", o.tags_b, "with --levels: crease/corner tag file of B")->type_name("FILE");
   cmd.add_flag("--fit", o.fit, "with --levels: fit the control points near the curves (kept when closer)");
   add_output_option(cmd, o.polyhedral_output, "polyhedral-output",
                     "with --levels: write the Boolean of the two limit meshes");

@@ -28,7 +28,8 @@ int run_subdivision_boolean_command(const Boolean_command_options& o, Streams io
   if (!o.oracle.empty()) throw Usage_error("--oracle is not available with --levels");
   const Boolean_operation op = parse_boolean_operation(o.op);
   validate_boolean_kernel(o.kernel);
-  const Mesh_double a = read_mesh(o.a), b = read_mesh(o.b);
+  const Mesh_double a = read_mesh(o.a, Read_options{.tags_path = o.tags_a});
+  const Mesh_double b = read_mesh(o.b, Read_options{.tags_path = o.tags_b});
   Subdivision_boolean_options options;
   options.mesh.check_self_intersections = !o.skip_self_intersection_check;
   options.fit = o.fit;

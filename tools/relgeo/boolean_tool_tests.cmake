@@ -38,3 +38,59 @@ relgeo_tool_test(experiment_quick_boolean 0
   STDOUT_MATCHES "sphere u sphere +union +filtered +ok" "torus u sphere +union +exact +ok +[0-9]+ +yes +yes +[1-9][0-9]* +0 "
   FILES ${_tmp}/results_boolean/boolean.json ${_tmp}/results_boolean/boolean/sphere_u_sphere.png
         ${_tmp}/results_boolean/boolean/torus_u_sphere.png)
+
+# ---- relgeo boolean --levels K: Booleans of Loop subdivision solids --------------
+# Two Loop spheres: the icosahedron and a rotated, moved copy (testdata).
+set(_ico ${_data}/icosahedron.off)
+set(_ico_moved ${_data}/icosahedron_moved.off)
+relgeo_tool_test(help_boolean_levels 0 ARGS help boolean
+  STDOUT_MATCHES "--levels" "--fit" "--polyhedral-output" "subdivision_to_polyhedral_fitted")
+# Level 1: the result is a control mesh with the curves as creases, certified
+# closed, manifold, oriented with valid tags; both distances are measured
+# (a positive number: the limit surface is not the polyhedral result).
+relgeo_tool_test(boolean_levels_union_json 0 STDOUT_JSON
+  ARGS boolean --levels 1 ${_ico} ${_ico_moved} --format json
+       --output ${_tmp}/loop_union.off --tags-output ${_tmp}/loop_union.tags
+       --polyhedral-output ${_tmp}/loop_union_polyhedral.off --report ${_tmp}/loop_union.json --png ${_tmp}/loop_union.png
+  STDOUT_MATCHES "\"status\": \"ok\"," "\"level\": 1," "\"fitted\": false,"
+                 "\"subdivision_to_polyhedral\": {[^}]*\"hausdorff\": [0-9.]+(e-[0-9]+)?,[^}]*\"samples\": [1-9]"
+                 "\"subdivision_to_polyhedral_fitted\": {"
+                 "\"closed\": {[^}]*\"status\": \"pass\"" "\"edge_manifold\": {[^}]*\"status\": \"pass\""
+                 "\"consistently_oriented\": {[^}]*\"status\": \"pass\"" "\"valid_tags\": {[^}]*\"status\": \"pass\""
+                 "\"curve_edges\": [1-9]" "\"valid_solid\": true," "\"layer\": "
+  STDOUT_REJECTS "\"status\": \"fail\""
+  FILES ${_tmp}/loop_union.off ${_tmp}/loop_union.tags ${_tmp}/loop_union_polyhedral.off ${_tmp}/loop_union.png
+  JSON_FILES ${_tmp}/loop_union.json)
+relgeo_tool_test(boolean_levels_text 0 ARGS boolean --levels 2 ${_ico} ${_ico_moved} --op intersection
+  STDOUT_MATCHES "level +2" "status +ok" "distance +[0-9]" "validation +")
+# --fit: the fitted distance is measured; the kept mesh is never the farther one.
+relgeo_tool_test(boolean_levels_fit 0 STDOUT_JSON
+  ARGS boolean --levels 1 --fit ${_ico} ${_ico_moved} --format json
+  STDOUT_MATCHES "\"status\": \"ok\"," "\"fitted_vertices\": [1-9]"
+                 "\"subdivision_to_polyhedral_fitted\": {[^}]*\"hausdorff\": [0-9.]+(e-[0-9]+)?,[^}]*\"samples\": [1-9]")
+relgeo_tool_test(boolean_levels_exact 0 STDOUT_JSON
+  ARGS boolean --levels 1 --kernel exact ${_ico} ${_ico_moved} --op difference --format json
+  STDOUT_MATCHES "\"kernel\": \"exact\"," "\"status\": \"ok\"," "\"closed\": {[^}]*\"status\": \"pass\"")
+# A creased operand (the creased box of test/data with its tags): its creases
+# and corners outside the other solid stay tagged in the result.
+relgeo_tool_test(boolean_levels_creased_operand 0 STDOUT_JSON
+  ARGS boolean --levels 1 ${PROJECT_SOURCE_DIR}/test/data/creased_box.off ${_ico_moved}
+       --tags-a ${PROJECT_SOURCE_DIR}/test/data/creased_box.tags --format json
+  STDOUT_MATCHES "\"status\": \"ok\"," "\"corners\": [1-9]" "\"valid_tags\": {[^}]*\"status\": \"pass\"")
+# Bad operands and usage: exit 2, one line.
+relgeo_tool_test(boolean_tags_without_levels 2 ARGS boolean ${_cube} ${_offset} --tags-a ${PROJECT_SOURCE_DIR}/test/data/creased_box.tags)
+relgeo_tool_test(boolean_levels_open_operand 2 ARGS boolean --levels 1 ${_ico} ${_data}/cube_open.off
+  STDERR_MATCHES "operand B")
+relgeo_tool_test(boolean_levels_cgal_kernel 2 ARGS boolean --levels 1 --kernel cgal-epick ${_ico} ${_ico_moved})
+relgeo_tool_test(boolean_levels_xor 2 ARGS boolean --levels 1 --op xor ${_ico} ${_ico_moved})
+relgeo_tool_test(boolean_levels_oracle 2 ARGS boolean --levels 1 --oracle cgal ${_ico} ${_ico_moved})
+relgeo_tool_test(boolean_fit_without_levels 2 ARGS boolean --fit ${_cube} ${_offset})
+# The experiment's subdivision-boolean section, quick: levels 0-2 under the
+# filtered kernel; a certified result with a failed check would exit 1.
+relgeo_tool_test(experiment_quick_subdivision_boolean 0
+  ARGS experiment --quick --quiet --only subdivision-boolean --output ${_tmp}/results_subdivision_boolean
+  STDOUT_MATCHES "Loop spheres u +1 +filtered +ok" "creased cube u torus +2 +filtered +ok"
+  FILES ${_tmp}/results_subdivision_boolean/subdivision-boolean.json
+        ${_tmp}/results_subdivision_boolean/subdivision-boolean/loop_spheres_union_level2.png
+        ${_tmp}/results_subdivision_boolean/subdivision-boolean/creased_cube_union_torus_level2.png
+  JSON_FILES ${_tmp}/results_subdivision_boolean/subdivision-boolean.json)

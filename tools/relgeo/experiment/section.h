@@ -125,6 +125,11 @@ Section_report joining_section(const Experiment_context& ctx);  // experiment/jo
 /// and compared with CGAL's corefinement on Epeck.
 Section_report boolean_section(const Experiment_context& ctx);  // experiment/boolean.cpp
 
+/// Booleans of Loop subdivision solids (thesis Ch. 5): levels 0..3 under the
+/// certified kernels, the distance of the limit surface to the polyhedral
+/// result before and after fitting, the validation, pictures.
+Section_report subdivision_boolean_section(const Experiment_context& ctx);  // experiment/subdivision_boolean.cpp
+
 /// Every section, in run order.
 inline constexpr Experiment_section experiment_sections[] = {
     {"kernels", "orientation grids and predicate workloads under every kernel: wrong answers, "
@@ -148,6 +153,10 @@ inline constexpr Experiment_section experiment_sections[] = {
     {"boolean", "mesh Booleans: general position, shared faces and edges, nested and identical operands under "
                 "every kernel: validity, volume against CGAL's corefinement (Epeck), time, pictures",
      &boolean_section},
+    {"subdivision-boolean", "Booleans of Loop subdivision solids at levels 0..3 under the certified kernels: distance "
+                            "of the limit surface to the polyhedral result (fitted and not), its decay, validation, "
+                            "times, pictures",
+     &subdivision_boolean_section},
 };
 
 }  // namespace relgeo::tool

@@ -114,7 +114,7 @@ io::Image render_mesh(const Mesh_double& mesh, const Render_options& o, const Me
       }
   }
   if (o.highlight_creases) {  // visible crease edges, red, two pixels wide
-    const double zs = 2e-3 * std::max(hi[0] - lo[0], hi[1] - lo[1]) * scale;
+    const double zs = 2e-3 * std::max(hi[0] - lo[0], hi[1] - lo[1]);  // depth is in model units
     for (const Edge& e : mesh.tags.creases()) {
       const V3 &a = s[e.a], &b = s[e.b];
       const int steps = std::max(1, int(std::ceil(std::max(std::abs(b.x - a.x), std::abs(b.y - a.y)))));

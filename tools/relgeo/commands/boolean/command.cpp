@@ -14,7 +14,9 @@ namespace relgeo::tool {
 
 int run_boolean_command(const Boolean_command_options& o, Streams io) {
   if (o.a.empty() || o.b.empty()) throw Usage_error("two operands are needed: relgeo boolean A B [--op OP]");
-  if (o.levels > 0) throw Usage_error("--levels (Booleans of Loop subdivision solids) is not available yet");
+  if (o.levels > 0) return run_subdivision_boolean_command(o, io);
+  if (o.fit || !o.polyhedral_output.empty() || !o.tags_a.empty() || !o.tags_b.empty())
+    throw Usage_error("--fit, --polyhedral-output, --tags-a and --tags-b need --levels K (K >= 1)");
   if (!o.oracle.empty() && o.oracle != "cgal") throw Usage_error("--oracle takes 'cgal'");
   const Boolean_operation op = parse_boolean_operation(o.op);
   validate_boolean_kernel(o.kernel);

@@ -1,25 +1,13 @@
 // tools/relgeo/commands/boolean/dispatch.cpp — relgeo::boolean under every
 // kernel of the tool that models IntersectionKernel_3 (relgeo's own).
 #include "commands/boolean/facade.h"
-#include "kernels/dispatch.h"
+#include "commands/boolean/intersection_kernels.h"
+#include "commands/boolean/run_of.h"
 #include "relgeo/boolean.h"
 #include "relgeo/mesh/self_intersection.h"
 
 namespace relgeo::tool {
 namespace {
-
-// relgeo's kernels (the CGAL adapters have no implicit points; their types
-// are never completed here). MPFR at 53 and 113 bits only: compile time.
-struct Intersection_kernels {
-  template <class K>
-  static constexpr bool check() {
-    if constexpr (is_cgal_kernel_v<K>) return false;
-    else if constexpr (mpfr_bits_v<K> > 0) return mpfr_bits_v<K> == 53 || mpfr_bits_v<K> == 113;
-    else return IntersectionKernel_3<K>;
-  }
-  template <class K>
-  static constexpr bool admits = check<K>();
-};
 
 template <std::size_t... I>
 std::vector<std::string> admitted_names(std::index_sequence<I...>) {
@@ -50,22 +38,7 @@ Boolean_run evaluate_boolean(const std::string& kernel, const Mesh_double& a, co
   return with_kernel<Intersection_kernels>(find_kernel(kernel), [&](auto k) {
     using K = decltype(k);
     const auto r = relgeo::boolean(a, b, op, k, options);
-    Boolean_run run;
-    run.kernel = find_kernel(kernel).label();
-    run.kernel_model = K::name();
-    run.certified = K::is_certified;
-    run.exact = K::has_exact_predicates;
-    run.ok = r.ok();
-    run.failure = r.failure;
-    run.undecided_pairs = r.undecided_pairs;
-    run.output = r.mesh;
-    run.rounding_error = r.rounding_error;
-    run.perturbations = r.perturbations;
-    run.largest_perturbation = r.largest_perturbation;
-    run.provenance = r.provenance;
-    run.counts = r.counts;
-    run.time = r.time;
-    run.validation = r.validation;
+    Boolean_run run = boolean_run_of(r, find_kernel(kernel).label());
     if constexpr (requires { { r.exact_vertices[0].point } -> std::same_as<const Point_3<mpq_class>&>; }) {
       if (r.ok()) {
         Triangle_mesh<Point_3<mpq_class>> exact;

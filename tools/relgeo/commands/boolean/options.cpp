@@ -31,7 +31,26 @@ std::string boolean_help_footer() {
          "Rounding the exact result to doubles can make it touch or cross itself (CGAL issue 9154): the "
          "validation says so and where.\n"
          "A symmetric difference (xor) touches itself along the intersection curves: its non-manifold edges are "
-         "expected.\n" +
+         "expected.\n"
+         "\nWith --levels K (K >= 1) the operands are Loop control meshes (their crease and corner tags from "
+         "--tags-a and --tags-b: 'crease a b' and 'corner v' lines) and the Boolean is that of their limit "
+         "surfaces (relgeo::subdivision_boolean, thesis Ch. 5): the Boolean of the two limit meshes at level K (the "
+         "polyhedral result, --polyhedral-output), its intersection curves mapped to the level-K control meshes, "
+         "which are cut and merged along them into one control mesh with the curves tagged as creases (--output, "
+         "its tags with --tags-output); --fit moves the control points near the curves (least squares) and keeps "
+         "the fitted mesh when it is closer to the polyhedral result; --png draws its limit mesh two levels finer "
+         "with the creases in red. The same kernels; --op xor and --oracle are not available with --levels (a "
+         "symmetric difference touches itself along the curves: no Loop control mesh represents it). The validation "
+         "certifies what it can and reports the rest as undecided or not checked, never as valid.\n"
+         "JSON fields with --levels: operation, kernel, kernel_model, certified, status, failure, level, fitted, "
+         "operands, output {vertices, faces, creases, corners, curve_vertices}, counts {curve_vertices, "
+         "curve_edges, bad_faces [A, B], fitted_vertices}, distance {subdivision_to_polyhedral, "
+         "subdivision_to_polyhedral_fitted: limit_to_polyhedral, polyhedral_to_limit, hausdorff, mean, samples}, "
+         "validation (validate_subdivision_solid: certified, summary, checks {closed, edge_manifold, "
+         "vertex_manifold, consistently_oriented, valid_tags, separated_pieces, adjacent_pieces: status, count, "
+         "where, note}, candidate_pairs, separated_pairs, adjacent_pairs, undecided_pairs), polyhedral {status, "
+         "failure, undecided_pairs, output, validation (as above), counts, time_s}, time_s {limit_meshes, "
+         "boolean, mapping, fitting, distance, validation, layer, total}.\n" +
          std::string(exit_codes_text);
 }
 
@@ -54,7 +73,12 @@ void declare_boolean_options(CLI::App& cmd, Boolean_command_options& o) {
   cmd.add_option("--oracle", o.oracle, "cgal: compare with CGAL's corefinement (Epeck)")->type_name("cgal");
   cmd.add_flag("--skip-self-intersection-check", o.skip_self_intersection_check,
                "do not test the operands for self-intersections (the other checks still run)");
-  cmd.add_option("--levels", o.levels, "Booleans of Loop subdivision solids at level K (not available yet)");
+  cmd.add_option("--levels", o.levels, "K >= 1: the Boolean of two Loop subdivision solids at level K")->type_name("K");
+  cmd.add_option("--tags-a", o.tags_a, "with --levels: crease/corner tag file of A")->type_name("FILE");
+  cmd.add_option("--tags-b", o.tags_b, "with --levels: crease/corner tag file of B")->type_name("FILE");
+  cmd.add_flag("--fit", o.fit, "with --levels: fit the control points near the curves (kept when closer)");
+  add_output_option(cmd, o.polyhedral_output, "polyhedral-output",
+                    "with --levels: write the Boolean of the two limit meshes");
   add_format_option(cmd, o.format);
 }
 

@@ -8,9 +8,7 @@
 
 namespace relgeo::tool {
 
-namespace {
-
-io::Json operand(const std::string& file, const Mesh_double& m) {
+io::Json operand_json(const std::string& file, const Mesh_double& m) {
   double v = 0;
   for (const auto& f : m.faces) {
     const auto &p = m.vertices[f[0]], &q = m.vertices[f[1]], &r = m.vertices[f[2]];
@@ -18,8 +16,6 @@ io::Json operand(const std::string& file, const Mesh_double& m) {
   }
   return {{"file", file}, {"vertices", m.vertices.size()}, {"faces", m.faces.size()}, {"volume", io::json_measure(v / 6)}};
 }
-
-}  // namespace
 
 io::Json boolean_report_json(const Boolean_report_input& in) {
   const Boolean_run& r = *in.run;
@@ -35,7 +31,7 @@ io::Json boolean_report_json(const Boolean_report_input& in) {
   for (std::size_t i = 0; i < r.undecided_pairs.size() && i < 100; ++i)
     pairs.push_back({r.undecided_pairs[i].first, r.undecided_pairs[i].second});
   j["undecided_pairs"] = pairs;
-  j["operands"] = {{"a", operand(in.input_a, *in.a)}, {"b", operand(in.input_b, *in.b)}};
+  j["operands"] = {{"a", operand_json(in.input_a, *in.a)}, {"b", operand_json(in.input_b, *in.b)}};
   j["output"] = {{"vertices", r.output.vertices.size()}, {"faces", r.output.faces.size()},
                  {"creases", r.output.tags.creases().size()}};
   j["validation"] = r.ok ? io::solid_report_json(r.validation) : io::Json(nullptr);

@@ -29,6 +29,8 @@ struct Boolean_report_input {
 /// cgal_volume, cgal_faces, volume_difference, symmetric_difference_volume,
 /// hausdorff}].
 io::Json boolean_report_json(const Boolean_report_input& in);
+/// {file, vertices, faces, volume} of an operand (volume: sum of the faces' signed tetrahedra in doubles).
+io::Json operand_json(const std::string& file, const Mesh_double& m);
 std::string boolean_report_text(const Boolean_report_input& in);
 
 }  // namespace relgeo::tool

@@ -1,0 +1,48 @@
+// tools/relgeo/commands/boolean/dispatch_subdivision.cpp —
+// relgeo::subdivision_boolean under every kernel `relgeo boolean` accepts
+// (the one translation unit that instantiates it), and the limit meshes of
+// the pictures.
+#include "commands/boolean/intersection_kernels.h"
+#include "commands/boolean/run_of.h"
+#include "commands/boolean/subdivision_facade.h"
+#include "relgeo/boolean.h"
+#include "relgeo/boolean/subdivision_boolean.h"
+#include "relgeo/subdivision/loop_subdivision.h"
+
+namespace relgeo::tool {
+
+Subdivision_boolean_run evaluate_subdivision_boolean(const std::string& kernel, const Mesh_double& a,
+                                                     const Mesh_double& b, Boolean_operation op, unsigned levels,
+                                                     const Subdivision_boolean_options& options) {
+  validate_boolean_kernel(kernel);
+  const Kernel_entry& entry = find_kernel(kernel);
+  return with_kernel<Intersection_kernels>(entry, [&](auto k) {
+    using K = decltype(k);
+    const Subdivision_boolean_result<K> r = relgeo::subdivision_boolean(a, b, op, levels, k, options);
+    Subdivision_boolean_run run;
+    run.kernel = entry.label();
+    run.kernel_model = K::name();
+    run.certified = K::is_certified;
+    run.exact = K::has_exact_predicates;
+    run.ok = r.ok();
+    run.failure = r.failure;
+    run.level = r.level;
+    run.polyhedral = boolean_run_of(r.polyhedral, entry.label());
+    run.control = r.control;
+    run.unfitted = r.unfitted;
+    run.fitted = r.fitted;
+    run.curve_vertices = r.curve_vertices;
+    run.distance = r.distance_to_polyhedral;
+    run.distance_fitted = r.distance_to_polyhedral_fitted;
+    run.validation = r.validation;
+    run.counts = r.counts;
+    run.time = r.time;
+    return run;
+  });
+}
+
+Mesh_double finer_limit_mesh(const Mesh_double& control, unsigned levels, const Loop_options& loop) {
+  return loop_limit_mesh(control, levels, loop);
+}
+
+}  // namespace relgeo::tool

@@ -1,0 +1,35 @@
+// tools/relgeo/commands/boolean/run_of.h — a Boolean_result<K> as the tool's
+// Boolean_run (kernel-free). Included by the boolean dispatch*.cpp files only.
+#pragma once
+
+#include <string>
+
+#include "commands/boolean/facade.h"
+#include "relgeo/boolean/boolean_types.h"
+
+namespace relgeo::tool {
+
+/// Every field of `run` that `r` and the kernel determine (not
+/// exact_self_intersecting_pairs: an extra computation, left to the caller).
+template <class K>
+Boolean_run boolean_run_of(const Boolean_result<K>& r, const std::string& kernel_label) {
+  Boolean_run run;
+  run.kernel = kernel_label;
+  run.kernel_model = K::name();
+  run.certified = K::is_certified;
+  run.exact = K::has_exact_predicates;
+  run.ok = r.ok();
+  run.failure = r.failure;
+  run.undecided_pairs = r.undecided_pairs;
+  run.output = r.mesh;
+  run.rounding_error = r.rounding_error;
+  run.perturbations = r.perturbations;
+  run.largest_perturbation = r.largest_perturbation;
+  run.provenance = r.provenance;
+  run.counts = r.counts;
+  run.time = r.time;
+  run.validation = r.validation;
+  return run;
+}
+
+}  // namespace relgeo::tool

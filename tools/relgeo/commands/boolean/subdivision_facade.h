@@ -1,0 +1,49 @@
+// tools/relgeo/commands/boolean/subdivision_facade.h — what `relgeo boolean
+// --levels K` and the experiment's subdivision-boolean section run:
+// relgeo::subdivision_boolean under a kernel named at run time (instantiated
+// in dispatch_subdivision.cpp only, over the kernels `boolean` accepts), and
+// the finer limit mesh of a result for pictures.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "commands/boolean/facade.h"
+#include "relgeo/boolean/subdivision_boolean_types.h"
+
+namespace relgeo::tool {
+
+/// One Boolean of two Loop subdivision solids under one kernel (the fields of
+/// Subdivision_boolean_result<K>, the polyhedral result as a Boolean_run).
+struct Subdivision_boolean_run {
+  std::string kernel, kernel_model;
+  bool certified = false, exact = false;
+  bool ok = false;
+  std::string failure;
+  unsigned level = 0;
+  /// The Boolean of the two limit meshes at `level` (its
+  /// exact_self_intersecting_pairs is not computed here).
+  Boolean_run polyhedral;
+  /// The subdivision result (crease tags: the curves and the operands'
+  /// creases) and the same before fitting.
+  Mesh_double control, unfitted;
+  bool fitted = false;
+  std::vector<Index> curve_vertices;
+  Surface_distance distance, distance_fitted;
+  Subdivision_validation validation;
+  Subdivision_boolean_counts counts;
+  Subdivision_boolean_timing time;
+};
+
+/// relgeo::subdivision_boolean(a, b, op, levels, K, options) for the kernel
+/// named `kernel` (one of boolean_kernel_names()).
+/// \throws Invalid_operand for invalid operands, Usage_error for a kernel that cannot.
+Subdivision_boolean_run evaluate_subdivision_boolean(const std::string& kernel, const Mesh_double& a,
+                                                     const Mesh_double& b, Boolean_operation op, unsigned levels,
+                                                     const Subdivision_boolean_options& options);
+
+/// The limit mesh of a Loop control mesh `levels` levels finer (doubles), its
+/// crease and corner tags refined with it: what the pictures show.
+Mesh_double finer_limit_mesh(const Mesh_double& control, unsigned levels, const Loop_options& loop);
+
+}  // namespace relgeo::tool

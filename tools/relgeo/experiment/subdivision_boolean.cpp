@@ -1,0 +1,226 @@
+// tools/relgeo/experiment/subdivision_boolean.cpp — the "subdivision-boolean"
+// section of `relgeo experiment` (thesis Ch. 5, SPEC Sec. 5b): Booleans of
+// two Loop subdivision solids at levels 0..3 under the certified kernels
+// filtered, exact and failsafe (--quick: levels 0..2, filtered).
+//
+// Level 0 is the plain mesh Boolean of the two control meshes (nothing is
+// subdivided: no distance). At level k >= 1, relgeo::subdivision_boolean
+// with fitting: the table gives the sampled Hausdorff distance between the
+// result's limit surface and the polyhedral result (the Boolean of the two
+// level-k limit meshes) before and after fitting, its ratio to the previous
+// level (the decay), the validation of the result as a subdivision solid
+// and the times. Failures of the section, under a certified kernel: a
+// result whose validation finds a defect (a failed check; undecided and
+// not-checked are not defects), a distance that falls less than 2x from one
+// level to the next, a kept fitted mesh farther than the unfitted one. A
+// kernel that cannot decide fails honestly and says why.
+// Pictures (PNG) in DIR/subdivision-boolean/: the result's limit surface two
+// levels finer than its control mesh, creases (the intersection curves, the
+// cube's edges) in red, kernel filtered.
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "commands/boolean/subdivision_facade.h"
+#include "commands/boolean/subdivision_report.h"
+#include "experiment/section.h"
+#include "relgeo/io/solid_report_json.h"
+#include "relgeo/mesh/shapes.h"
+#include "render/mesh_render.h"
+
+namespace relgeo::tool {
+
+namespace {
+
+using io::Json;
+
+struct Solid_pair_case {
+  std::string name, file;
+  Mesh_double a, b;
+  Boolean_operation op = Boolean_operation::union_of;
+  double azimuth_deg = 35;  ///< of the pictures' view direction
+};
+
+// The cube with its 12 edges tagged as creases and its 8 corners as corners:
+// its Loop limit surface is the cube itself (flat faces, straight edges).
+Mesh_double creased_cube(double x0, double y0, double z0, double s) {
+  Mesh_double m = cube(x0, y0, z0, s);
+  for (Index i = 0; i < 8; ++i) {
+    m.tags.add_corner(i);
+    for (Index j = i + 1; j < 8; ++j)
+      if (std::popcount(i ^ j) == 1) m.tags.add_crease(i, j);
+  }
+  return m;
+}
+
+std::vector<Solid_pair_case> solid_pair_cases() {
+  return {
+      {"Loop spheres u", "loop_spheres_union", icosphere(1),
+       rigidly_moved(icosphere(1), 0.3, 0.2, {0.5, 0.3, 0.2}), Boolean_operation::union_of, -55},
+      {"creased cube u torus", "creased_cube_union_torus", creased_cube(-0.6, -0.6, -0.6, 1.2),
+       rigidly_moved(torus(0.8, 0.3, 12, 6), 0.2, 0.35, {0.02, 0.03, 0.1})},
+  };
+}
+
+std::string g3(double v) { return std::isnan(v) ? "-" : measure_text(v, 3); }
+std::string ms(double seconds) { return format_fixed(1e3 * seconds, 2); }
+
+Json timing_json(const Subdivision_boolean_timing& t) {
+  return {{"limit_meshes", t.limit_meshes}, {"boolean", t.boolean},   {"mapping", t.mapping},
+          {"fitting", t.fitting},           {"distance", t.distance}, {"validation", t.validation},
+          {"layer", t.layer()},             {"total", t.total()}};
+}
+
+// Level 0: the Boolean of the control meshes themselves.
+Json control_boolean_row(const Solid_pair_case& c, const std::string& kernel, Text_table& t) {
+  Boolean_run run;
+  std::string status;
+  try {
+    run = evaluate_boolean(kernel, c.a, c.b, c.op, Boolean_options{});
+    status = run.ok ? "ok" : "failed: " + run.failure;
+  } catch (const std::exception& e) {
+    status = std::string("refused: ") + e.what();
+  }
+  t.add_row({c.name, "0", kernel, status.substr(0, 40), run.ok ? std::to_string(run.output.faces.size()) : "-",
+             run.ok ? std::to_string(run.output.tags.creases().size()) : "-", "-", "-", "-", "-",
+             run.ok ? run.validation.summary() : "-", ms(run.time.total()), "-", ms(run.time.total())});
+  Json j;
+  j["case"] = c.name;
+  j["level"] = 0;
+  j["kernel"] = kernel;
+  j["status"] = status;
+  j["faces"] = run.output.faces.size();
+  j["curve_edges"] = run.output.tags.creases().size();
+  j["polyhedral_validation"] = run.ok ? io::solid_report_json(run.validation) : Json(nullptr);
+  j["time_s"] = {{"boolean", run.time.total()}};
+  return j;
+}
+
+}  // namespace
+
+Section_report subdivision_boolean_section(const Experiment_context& ctx) {
+  Section_report rep;
+  const std::vector<std::string> kernels =
+      ctx.quick ? std::vector<std::string>{"filtered"} : std::vector<std::string>{"filtered", "exact", "failsafe"};
+  const unsigned max_level = ctx.quick ? 2 : 3;
+  const unsigned picture_extra_levels = 2;
+  const double min_decay = 2;  // per level, from level 1 on (issue 12)
+  Text_table t({"case", "level", "kernel", "status", "faces", "curve edges", "d", "d fitted", "kept", "ratio",
+                "validation", "time ms", "layer ms", "boolean ms"});
+  t.set_left_columns(4);
+  Json rows = Json::array();
+  std::vector<Picture> pictures;
+  std::size_t certified_runs = 0, certified_clean = 0;
+  // Decay of the unfitted distance from level 1 to the last level, per case and kernel.
+  std::vector<std::string> decay;
+  for (const Solid_pair_case& c : solid_pair_cases()) {
+    for (const std::string& kernel : kernels) {
+      ctx.progress(c.name + ": level 0, " + kernel);
+      rows.push_back(control_boolean_row(c, kernel, t));
+      double previous = std::nan(""), first = std::nan(""), last = std::nan("");
+      for (unsigned level = 1; level <= max_level; ++level) {
+        ctx.progress(c.name + ": level " + std::to_string(level) + ", " + kernel);
+        Subdivision_boolean_run run;
+        std::string status;
+        try {
+          Subdivision_boolean_options options;
+          options.fit = true;
+          run = evaluate_subdivision_boolean(kernel, c.a, c.b, c.op, level, options);
+          status = run.ok ? "ok" : "failed: " + run.failure;
+        } catch (const std::exception& e) {
+          status = std::string("refused: ") + e.what();
+        }
+        const double d = run.ok && run.distance.measured() ? run.distance.hausdorff() : std::nan("");
+        const double df = run.ok && run.distance_fitted.measured() ? run.distance_fitted.hausdorff() : std::nan("");
+        const double ratio = previous / d;
+        previous = d;
+        if (level == 1) first = d;
+        last = d;
+        if (run.certified && run.ok) {
+          const std::string where = c.name + " at level " + std::to_string(level) + " under " + kernel + ": ";
+          ++certified_runs;
+          if (run.validation.has_no_defect()) ++certified_clean;
+          else rep.failures.push_back(where + "certified result with a defect: " + run.validation.summary());
+          // The bars of issue 12: the distance falls at least 2x per level;
+          // the kept mesh is never the farther one.
+          if (ratio < min_decay)
+            rep.failures.push_back(where + "the distance fell only x" + g3(ratio) + " from the previous level");
+          if (run.fitted && !(df <= d)) rep.failures.push_back(where + "kept the fitted mesh though it is farther");
+        }
+        t.add_row({c.name, std::to_string(level), kernel, status.substr(0, 40),
+                   run.ok ? std::to_string(run.control.faces.size()) : "-",
+                   run.ok ? std::to_string(run.counts.curve_edges) : "-", g3(d), g3(df),
+                   !run.ok ? "-" : run.fitted ? "fitted" : "unfitted", g3(ratio),
+                   run.ok ? run.validation.summary() : "-", ms(run.time.total()), ms(run.time.layer()),
+                   ms(run.time.boolean)});
+        Json j;
+        j["case"] = c.name;
+        j["level"] = level;
+        j["kernel"] = kernel;
+        j["kernel_model"] = run.kernel_model;
+        j["status"] = status;
+        j["faces"] = run.control.faces.size();
+        j["counts"] = {{"curve_vertices", run.counts.curve_vertices},
+                       {"curve_edges", run.counts.curve_edges},
+                       {"bad_faces", {run.counts.bad_faces[0], run.counts.bad_faces[1]}},
+                       {"fitted_vertices", run.counts.fitted_vertices}};
+        j["distance"] = {{"subdivision_to_polyhedral", surface_distance_json(run.distance)},
+                         {"subdivision_to_polyhedral_fitted", surface_distance_json(run.distance_fitted)}};
+        j["fitted"] = run.fitted;
+        j["ratio_to_previous_level"] = io::json_measure(ratio);
+        j["validation"] = run.ok ? subdivision_validation_json(run.validation) : Json(nullptr);
+        j["polyhedral_validation"] = run.polyhedral.ok ? io::solid_report_json(run.polyhedral.validation) : Json(nullptr);
+        j["time_s"] = timing_json(run.time);
+        rows.push_back(j);
+        if (kernel == "filtered" && run.ok) {
+          ctx.progress(c.name + ": picture of level " + std::to_string(level));
+          Render_options ro;
+          ro.highlight_creases = true;
+          ro.azimuth_deg = c.azimuth_deg;
+          const auto path = ctx.section_dir() / (c.file + "_level" + std::to_string(level) + ".png");
+          io::write_png(path.string(), render_mesh(finer_limit_mesh(run.control, picture_extra_levels, {}), ro));
+          pictures.push_back({ctx.relative(path), c.name + ", level " + std::to_string(level) +
+                                                      " (filtered): limit surface, creases red"});
+        }
+      }
+      decay.push_back(c.name + " " + kernel + ": " + g3(first) + " -> " + g3(last) + " (x" + g3(first / last) + ")");
+      t.add_rule();
+    }
+  }
+  rep.json["runs"] = rows;
+  rep.json["levels"] = max_level;
+  rep.json["kernels"] = kernels;
+  rep.json["notes"] =
+      "level 0: the mesh Boolean of the two control meshes; level k >= 1: relgeo::subdivision_boolean with fitting. "
+      "d = sampled Hausdorff distance between the result's limit surface and the polyhedral result (the Boolean of "
+      "the two level-k limit meshes), before fitting; d fitted = the same after fitting; kept = which control mesh "
+      "the result keeps; ratio = d at the previous level / d; validation = validate_subdivision_solid (level 0: "
+      "validate_solid of the control meshes' Boolean); layer = mapping, cutting, merging and tagging.";
+  rep.add_note(
+      "Booleans of Loop subdivision solids (thesis Ch. 5): level 0 is the mesh Boolean of the control meshes; at\n"
+      "level k the limit meshes' Boolean (the polyhedral result) is mapped back to the level-k control meshes, which\n"
+      "are cut and merged along the curves (tagged as creases), then fitted (least squares near the curves).\n"
+      "d = sampled Hausdorff distance from the result's limit surface to the polyhedral result (d fitted: after\n"
+      "fitting; kept: the closer mesh), ratio = d of the previous level / d. validation: each check of the\n"
+      "subdivision solid that did not pass (adjacent pieces are not checked: the Bezier criteria are not\n"
+      "implemented), 'certified' when all pass. Under a certified kernel, a failed check, a ratio below 2 or a\n"
+      "kept fitted mesh farther than the unfitted one is a failure of the section; a kernel that cannot decide\n"
+      "reports 'failed' with the reason.\n"
+      "Pictures: DIR/subdivision-boolean/*.png (limit surfaces " +
+      std::to_string(picture_extra_levels) + " levels finer than the control mesh).\n\n");
+  rep.add_table(t);
+  std::string decay_note = "Decay of d from level 1 to level " + std::to_string(max_level) + ":\n";
+  for (const std::string& line : decay) decay_note += "  " + line + "\n";
+  rep.add_note(decay_note + "\n");
+  rep.json["decay"] = decay;
+  rep.add_gallery("Limit surfaces of the subdivision results, creases in red (kernel filtered)", std::move(pictures));
+  rep.add_headline("Certified subdivision Boolean results without a failed check",
+                   std::to_string(certified_clean) + " of " + std::to_string(certified_runs));
+  if (!decay.empty()) rep.add_headline("Distance decay, level 1 to " + std::to_string(max_level), decay.front());
+  return rep;
+}
+
+}  // namespace relgeo::tool

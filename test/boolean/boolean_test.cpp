@@ -121,9 +121,10 @@ TYPED_TEST(MeshBoolean, SpheresAndTorusInGeneralPosition) {
       // collapse a sliver (rounding_error says how far they moved), so only
       // the combinatorial checks are asserted on the rounded mesh.
       const Mesh_report report = check_mesh(r.mesh);
-      if (kOps[i] != Op::symmetric_difference)
+      if (kOps[i] != Op::symmetric_difference) {
         EXPECT_TRUE(report.is_closed() && report.is_manifold() && report.is_consistently_oriented())
             << name << " " << to_string(kOps[i]);
+      }
       EXPECT_GT(r.counts.new_vertices, 0u);
       EXPECT_FALSE(r.mesh.tags.creases().empty()) << "the intersection curves are creases";
     }

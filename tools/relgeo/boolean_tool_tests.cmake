@@ -94,3 +94,10 @@ relgeo_tool_test(experiment_quick_subdivision_boolean 0
         ${_tmp}/results_subdivision_boolean/subdivision-boolean/loop_spheres_union_level2.png
         ${_tmp}/results_subdivision_boolean/subdivision-boolean/creased_cube_union_torus_level2.png
   JSON_FILES ${_tmp}/results_subdivision_boolean/subdivision-boolean.json)
+# CGAL's Epeck as the Boolean's kernel (implicit points by its lazy exact
+# constructions): the exact overlap, no crossing before rounding; not with --levels.
+relgeo_tool_test(boolean_cgal_epeck 0 STDOUT_JSON
+  ARGS boolean ${_cube} ${_offset} --op difference --kernel cgal-epeck --format json
+  STDOUT_MATCHES "\"kernel\": \"cgal-epeck\"," "\"value\": 0.671875," "\"exact_self_intersecting_pairs\": 0,")
+relgeo_tool_test(boolean_levels_cgal_epeck 2
+  ARGS boolean --levels 1 ${_data}/icosahedron.off ${_data}/icosahedron_moved.off --kernel cgal-epeck)

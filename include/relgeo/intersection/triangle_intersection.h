@@ -38,6 +38,7 @@
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/core/errors.h"
 #include "relgeo/kernel/implicit_point.h"
+#include "relgeo/mesh/internal/point_access.h"
 
 namespace relgeo {
 
@@ -465,13 +466,15 @@ class Triangle_intersector {
   // e0 moved along `axis`: off the common plane, whose normal has a nonzero
   // component along the projection axis.
   static P off_plane(const P& e0, int axis) {
-    using FT = typename K::FT;
-    P q = e0;
-    FT* c[3] = {&q.x, &q.y, &q.z};
-    const FT moved = FT(*c[axis] + FT(1));
-    if (K::compare_ft(moved, *c[axis]) == Certified_sign::zero) *c[axis] = FT(*c[axis] * FT(2));  // |c| >= 2^53
-    else *c[axis] = moved;
-    return q;
+    using A = internal::Point_access<P>;
+    using FT = typename A::FT;
+    FT c[3] = {A::x(e0), A::y(e0), A::z(e0)};
+    const FT moved = FT(c[axis] + FT(1));
+    bool absorbed = false;  // |c| >= 2^53 in a floating-point type
+    if constexpr (requires { K::compare_ft(moved, c[axis]); })
+      absorbed = K::compare_ft(moved, c[axis]) == Certified_sign::zero;
+    c[axis] = absorbed ? FT(c[axis] * FT(2)) : moved;
+    return A::make(c[0], c[1], c[2]);
   }
 
   void finish_coplanar(const boost::container::static_vector<Polygon_vertex, 9>& poly, const std::array<IP, 3>& A,
@@ -631,7 +634,9 @@ class Triangle_overlap_test {
   std::optional<bool> coplanar(const Triangle& a, const Triangle& b) const {
     const auto o2 = k_.orientation_2_object();
     const auto project = [&](const P& p, int axis) {  // kept axes (axis+1)%3, (axis+2)%3
-      return typename K::Point_2{axis == 0 ? p.y : (axis == 1 ? p.z : p.x), axis == 0 ? p.z : (axis == 1 ? p.x : p.y)};
+      using A = internal::Point_access<P>;
+      return typename K::Point_2(axis == 0 ? A::y(p) : (axis == 1 ? A::z(p) : A::x(p)),
+                                 axis == 0 ? A::z(p) : (axis == 1 ? A::x(p) : A::y(p)));
     };
     for (int axis = 2; axis >= 0; --axis) {
       std::array<typename K::Point_2, 3> A, B;

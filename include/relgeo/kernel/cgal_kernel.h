@@ -21,6 +21,8 @@
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/core/floating_point.h"
+#include "relgeo/kernel/implicit_point.h"
+#include "relgeo/kernel/internal/implicit_cgal.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
 
 namespace CGAL {
@@ -47,6 +49,25 @@ inline bool cgal_environment_is_default() noexcept {
 #endif
 }
 
+template <class CK>
+inline constexpr bool cgal_has_exact_constructions =
+    std::is_same_v<typename CGAL::Algebraic_structure_traits<typename CK::FT>::Is_exact, CGAL::Tag_true>;
+
+/// No implicit points (a CGAL kernel without exact constructions).
+struct No_implicit_points {};
+
+}  // namespace internal
+
+template <class K>
+class Cgal_kernel;
+
+namespace internal {
+/// Kernels with exact constructions (Epeck) model IntersectionKernel_3
+/// through their own lazy exact constructions (implicit_cgal.h).
+template <class CK>
+using Cgal_implicit_base = std::conditional_t<cgal_has_exact_constructions<CK>,
+                                              Implicit_kernel_base<Cgal_implicit_policy<Cgal_kernel<CK>, CK>>,
+                                              No_implicit_points>;
 }  // namespace internal
 
 /// Short names of the CGAL kernels relgeo knows; specialise for your own.
@@ -78,11 +99,14 @@ struct Cgal_kernel_name<CGAL::Epeck> {
 /// with NaN or infinite coordinates give `uncertain` (CGAL's exact fallback
 /// cannot convert them); kernels with exact constructions refuse such points
 /// at construction (Non_finite_input).
+///
+/// Kernels with exact constructions (Epeck) also model IntersectionKernel_3:
+/// an implicit point is a CGAL point constructed in the kernel's lazy exact
+/// number type, the predicates CGAL's own on it (internal/implicit_cgal.h).
 template <class K>
-class Cgal_kernel {
+class Cgal_kernel : public internal::Cgal_implicit_base<K> {
   using Base_ft = typename K::FT;
-  static constexpr bool ft_is_exact =
-      std::is_same_v<typename CGAL::Algebraic_structure_traits<Base_ft>::Is_exact, CGAL::Tag_true>;
+  static constexpr bool ft_is_exact = internal::cgal_has_exact_constructions<K>;
 
  public:
   using Cgal = K;

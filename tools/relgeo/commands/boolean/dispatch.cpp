@@ -1,5 +1,8 @@
 // tools/relgeo/commands/boolean/dispatch.cpp — relgeo::boolean under every
-// kernel of the tool that models IntersectionKernel_3 (relgeo's own).
+// kernel of the tool that models IntersectionKernel_3 (relgeo's own and
+// CGAL's Epeck).
+#include "kernels/cgal_kernels.h"
+#define RELGEO_TOOL_CGAL_KERNELS_COMPLETE 1
 #include "commands/boolean/facade.h"
 #include "commands/boolean/intersection_kernels.h"
 #include "commands/boolean/run_of.h"
@@ -39,9 +42,12 @@ Boolean_run evaluate_boolean(const std::string& kernel, const Mesh_double& a, co
     using K = decltype(k);
     const auto r = relgeo::boolean(a, b, op, k, options);
     Boolean_run run = boolean_run_of(r, find_kernel(kernel).label());
-    if constexpr (requires { { r.exact_vertices[0].point } -> std::same_as<const Point_3<mpq_class>&>; }) {
+    // Exact kernels whose implicit points are exact points (Exact_kernel,
+    // Epeck): the result before rounding, tested for self-intersections.
+    if constexpr (K::has_exact_constructions &&
+                  requires { { r.exact_vertices[0].point } -> std::convertible_to<typename K::Point_3>; }) {
       if (r.ok()) {
-        Triangle_mesh<Point_3<mpq_class>> exact;
+        Triangle_mesh<typename K::Point_3> exact;
         exact.faces = r.mesh.faces;
         for (const auto& v : r.exact_vertices) exact.vertices.push_back(v.point);
         run.exact_self_intersecting_pairs = find_self_intersections<K>(exact).pairs.size();

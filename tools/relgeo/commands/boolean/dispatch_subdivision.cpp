@@ -16,7 +16,9 @@ Subdivision_boolean_run evaluate_subdivision_boolean(const std::string& kernel, 
                                                      const Subdivision_boolean_options& options) {
   validate_boolean_kernel(kernel);
   const Kernel_entry& entry = find_kernel(kernel);
-  return with_kernel<Intersection_kernels>(entry, [&](auto k) {
+  if (entry.cgal)  // keeps CGAL's kernels out of this translation unit
+    throw Usage_error("kernel '" + kernel + "': --levels runs under relgeo's kernels only");
+  return with_kernel<Relgeo_intersection_kernels>(entry, [&](auto k) {
     using K = decltype(k);
     const Subdivision_boolean_result<K> r = relgeo::subdivision_boolean(a, b, op, levels, k, options);
     Subdivision_boolean_run run;

@@ -1,7 +1,8 @@
 // tools/relgeo/commands/boolean/intersection_kernels.h — the kernels `relgeo
-// boolean` runs (with and without --levels): relgeo's own that model
-// IntersectionKernel_3. Included by the boolean dispatch*.cpp files only
-// (the compile firewall, kernels/dispatch.h).
+// boolean` runs: those that model IntersectionKernel_3 — relgeo's own and,
+// without --levels, CGAL's with exact constructions (Epeck; the translation
+// unit must include kernels/cgal_kernels.h to tell). Included by the boolean
+// dispatch*.cpp files only (the compile firewall, kernels/dispatch.h).
 #pragma once
 
 #include "kernels/dispatch.h"
@@ -9,9 +10,9 @@
 
 namespace relgeo::tool {
 
-// The CGAL adapters have no implicit points (their types are never completed
-// here). MPFR at 53 and 113 bits only: compile time.
-struct Intersection_kernels {
+// relgeo's kernels with implicit points (the CGAL adapters' types are never
+// completed here). MPFR at 53 and 113 bits only: compile time.
+struct Relgeo_intersection_kernels {
   template <class K>
   static constexpr bool check() {
     if constexpr (is_cgal_kernel_v<K>) return false;
@@ -21,5 +22,18 @@ struct Intersection_kernels {
   template <class K>
   static constexpr bool admits = check<K>();
 };
+
+#if defined(RELGEO_TOOL_CGAL_KERNELS_COMPLETE)
+// And the CGAL adapters that model IntersectionKernel_3 (Epeck).
+struct Intersection_kernels {
+  template <class K>
+  static constexpr bool check() {
+    if constexpr (is_cgal_kernel_v<K>) return IntersectionKernel_3<K>;
+    else return Relgeo_intersection_kernels::admits<K>;
+  }
+  template <class K>
+  static constexpr bool admits = check<K>();
+};
+#endif
 
 }  // namespace relgeo::tool

@@ -244,6 +244,31 @@ def intersections():
         write("implicit_point", "lpi_tpi_kernel%d" % kernel, pools(kernel, pts, defs + cases))
 
 
+def booleans():
+    # head byte: op (0 union, 1 intersection, 2 difference, 3 xor) + 4 * mode
+    # (0 mesh Boolean with the exact checks, 1 without, 2 and 3 subdivision
+    # Boolean at level 0 and 1); shape bytes (5 cube, 6 icosahedron, 1
+    # octahedron); per operand a motion: kind byte (0 none, 1 quarter turns,
+    # 2 free angle), its angle byte, then per axis a flag byte (even: a
+    # multiple of 1/8 from the next byte) and the byte.
+    def motion(kind, angle, t):
+        b = bytes([kind, angle])
+        for x in t:
+            b += bytes([0, x % 256])
+        return b
+    cases = {
+        "cubes_coplanar": (1, 5, 5, motion(0, 0, (0, 0, 0)), motion(0, 0, (4, 2, 0))),
+        "cubes_touching": (0, 5, 5, motion(0, 0, (0, 0, 0)), motion(0, 0, (8, 0, 0))),
+        "cubes_identical": (0, 5, 5, motion(0, 0, (0, 0, 0)), motion(1, 1, (8, 0, 0))),
+        "ico_crossing": (2, 6, 6, motion(0, 0, (0, 0, 0)), motion(2, 30, (3, 2, 1))),
+        "octa_cube": (1, 1, 5, motion(0, 0, (0, 0, 0)), motion(2, 17, (1, 1, 1))),
+        "subdivision_level1": (0 + 4 * 3, 6, 6, motion(0, 0, (0, 0, 0)), motion(2, 30, (3, 2, 1))),
+        "subdivision_level0_creased": (2 + 4 * 2, 5, 1, motion(0, 0, (0, 0, 0)), motion(2, 9, (2, 3, 4))),
+    }
+    for name, (head, sa, sb, ma, mb) in cases.items():
+        write("mesh_boolean", name, bytes([head, sa, sb]) + ma + mb + b"\x01")
+
+
 if __name__ == "__main__":
     meshes()
     hulls()
@@ -251,3 +276,4 @@ if __name__ == "__main__":
     extrusions()
     subdivisions()
     intersections()
+    booleans()

@@ -410,13 +410,21 @@ class Face_bvh {
         lo[k] = std::min(lo[k], c), hi[k] = std::max(hi[k], c);
       }
     double scale[3];
-    for (int k = 0; k < 3; ++k) scale[k] = hi[k] > lo[k] ? 1023.0 / (hi[k] - lo[k]) : 0.0;
+    for (int k = 0; k < 3; ++k) {
+      // A spread below 1023 / DBL_MAX (subnormal) gives an infinite scale,
+      // and 0 * inf = NaN: such an axis gets no Morton digits.
+      scale[k] = hi[k] > lo[k] ? 1023.0 / (hi[k] - lo[k]) : 0.0;
+      if (!std::isfinite(scale[k])) scale[k] = 0.0;
+    }
     std::vector<std::uint64_t> keys(n), tmp(n);
     for (std::size_t f = 0; f < n; ++f) {
       std::uint32_t code = 0;
       for (int k = 0; k < 3; ++k) {
         const double c = 0.5 * boxes[f].lo[k] + 0.5 * boxes[f].hi[k];
-        const auto q = static_cast<std::uint32_t>(std::clamp((c - lo[k]) * scale[k] + 0.5, 0.0, 1023.0));
+        const double v = (c - lo[k]) * scale[k] + 0.5;
+        // !(v >= 0) also catches a NaN (a box with infinite ends), which
+        // std::clamp would pass through to an undefined conversion.
+        const auto q = static_cast<std::uint32_t>(!(v >= 0.0) ? 0.0 : std::min(v, 1023.0));
         code |= spread_bits(q) << k;
       }
       keys[f] = (std::uint64_t{code} << 32) | f;

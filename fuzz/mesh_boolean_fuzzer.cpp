@@ -19,8 +19,11 @@
 //    volumes satisfy, exactly in rationals,
 //      V(A u B) + V(A n B) = V(A) + V(B),  V(A - B) = V(A) - V(A n B),
 //    and the exact result has no self-intersection (exact test on its
-//    rational vertices) and is a closed, oriented 2-manifold (xor excepted:
-//    it touches itself along the curves);
+//    rational vertices) and is a closed oriented surface: every directed
+//    edge (u, v) is used as often as (v, u). (Not necessarily a manifold: a
+//    regularised result may pinch along an edge, e.g. A - B for B a copy of
+//    A moved by a subnormal amount, where faces parallel to the motion
+//    overlap — found by this harness.)
 //  * the filtered kernel gives the same faces as Exact_kernel;
 //  * the fail-safe and naive kernels return (ok or failed), never crash;
 //  * subdivision Booleans: a result, or a relgeo::Error; a result's control
@@ -30,6 +33,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <utility>
 
 #include "fuzz_support.h"
 #include "mesh_builder.h"
@@ -87,6 +92,20 @@ mpq_class exact_volume(const Mesh_d& m) {
   return v;
 }
 
+// Every directed edge (u, v) used as often as (v, u): a closed, oriented
+// surface (a 2-cycle), manifold or not.
+bool balanced_directed_edges(const Mesh_d& m) {
+  std::map<std::pair<Index, Index>, int> count;
+  for (const Triangle& f : m.faces)
+    for (int k = 0; k < 3; ++k) {
+      const Index u = f[k], v = f[(k + 1) % 3];
+      count[{std::min(u, v), std::max(u, v)}] += u < v ? 1 : -1;
+    }
+  for (const auto& [e, c] : count)
+    if (c != 0) return false;
+  return true;
+}
+
 void check_exact(const Mesh_d& a, const Mesh_d& b) {
   Boolean_options o;
   o.use_double_point_kernel = true;
@@ -102,9 +121,7 @@ void check_exact(const Mesh_d& a, const Mesh_d& b) {
     exact.faces = r->mesh.faces;
     for (const auto& v : r->exact_vertices) exact.vertices.push_back(v.point);
     require(find_self_intersections<Exact_kernel>(exact).pairs.empty(), "the exact result crosses itself");
-    const Mesh_report rep = check_mesh(r->mesh, Mesh_check_options{.check_collinear_faces = false});
-    require(rep.is_closed() && rep.is_manifold() && rep.is_consistently_oriented(),
-            "the exact result is not a closed oriented manifold");
+    require(balanced_directed_edges(r->mesh), "the exact result is not a closed oriented surface");
   }
   const auto f = boolean(a, b, Boolean_operation::union_of);
   require(f.ok() && f.mesh.faces == u.mesh.faces, "the filtered kernel differs from the exact one");

@@ -1,6 +1,8 @@
 // The CGAL subjects of relgeo_boolean_benchmark: corefine_and_compute_union /
 // intersection / difference on Surface_mesh, with Epick and with Epeck, on
-// the same operands (converted before timing).
+// the same operands (converted before timing); and relgeo's Boolean under
+// CGAL's Epeck (Cgal_kernel<Epeck>: relgeo's algorithm in CGAL's arithmetic,
+// against CGAL's algorithm in the same arithmetic).
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
@@ -10,6 +12,8 @@
 #include <utility>
 
 #include "boolean_benchmark.h"
+#include "relgeo/boolean.h"
+#include "relgeo/kernel/cgal_kernel.h"
 #include "relgeo/mesh/cgal_conversion.h"
 
 namespace relgeo_bench {
@@ -39,11 +43,19 @@ std::function<Run_outcome()> corefine(const Mesh& a, const Mesh& b, relgeo::Bool
   };
 }
 
+std::function<Run_outcome()> relgeo_on_epeck(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
+  return [&a, &b, op] {
+    const auto r = relgeo::boolean(a, b, op, relgeo::Cgal_kernel<CGAL::Epeck>{}, {.validate_output = false});
+    return Run_outcome{r.mesh.faces.size(), r.ok() && closed_oriented_manifold(r.mesh), volume(r.mesh)};
+  };
+}
+
 }  // namespace
 
 std::vector<Subject> cgal_subjects() {
   return {{"CGAL::corefine Epick", corefine<CGAL::Epick>, false, ""},
-          {"CGAL::corefine Epeck", corefine<CGAL::Epeck>, true, ""}};
+          {"CGAL::corefine Epeck", corefine<CGAL::Epeck>, true, ""},
+          {"relgeo on CGAL::Epeck", relgeo_on_epeck, true, "CGAL::corefine Epeck"}};
 }
 
 }  // namespace relgeo_bench

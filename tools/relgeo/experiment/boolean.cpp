@@ -69,7 +69,7 @@ bool bounds_a_solid(const Solid_report& v) {
 
 Section_report boolean_section(const Experiment_context& ctx) {
   Section_report rep;
-  const std::vector<std::string> kernels = {"double", "failsafe", "filtered", "exact"};
+  const std::vector<std::string> kernels = {"double", "failsafe", "filtered", "exact", "cgal-epeck"};
   Text_table t({"case", "op", "kernel", "status", "faces", "solid", "manifold", "crossings", "exact cr.", "volume",
                 "rel. error", "curves", "time s"});
   t.set_left_columns(4);

@@ -22,10 +22,7 @@ Subdivision_boolean_run evaluate_subdivision_boolean(const std::string& kernel, 
     using K = decltype(k);
     const Subdivision_boolean_result<K> r = relgeo::subdivision_boolean(a, b, op, levels, k, options);
     Subdivision_boolean_run run;
-    run.kernel = entry.label();
-    run.kernel_model = K::name();
-    run.certified = K::is_certified;
-    run.exact = K::has_exact_predicates;
+    set_kernel_fields<K>(run, entry.label());
     run.ok = r.ok();
     run.failure = r.failure;
     run.level = r.level;

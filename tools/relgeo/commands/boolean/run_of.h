@@ -9,15 +9,22 @@
 
 namespace relgeo::tool {
 
+/// The kernel's label, model name and guarantees in a run record (Boolean_run,
+/// Subdivision_boolean_run).
+template <class K, class Run>
+void set_kernel_fields(Run& run, const std::string& kernel_label) {
+  run.kernel = kernel_label;
+  run.kernel_model = K::name();
+  run.certified = K::is_certified;
+  run.exact = K::has_exact_predicates;
+}
+
 /// Every field of `run` that `r` and the kernel determine (not
 /// exact_self_intersecting_pairs: an extra computation, left to the caller).
 template <class K>
 Boolean_run boolean_run_of(const Boolean_result<K>& r, const std::string& kernel_label) {
   Boolean_run run;
-  run.kernel = kernel_label;
-  run.kernel_model = K::name();
-  run.certified = K::is_certified;
-  run.exact = K::has_exact_predicates;
+  set_kernel_fields<K>(run, kernel_label);
   run.ok = r.ok();
   run.failure = r.failure;
   run.undecided_pairs = r.undecided_pairs;

@@ -63,8 +63,11 @@ void expect_valid_control_mesh(const R& r) {
       << v.summary();
   EXPECT_TRUE(v.has_no_defect()) << v.summary();
   EXPECT_TRUE(v.separated_pieces.passed()) << v.summary();
-  // Adjacent pieces are never reported as certified (not implemented).
+  // Adjacent pieces are never reported as certified (not implemented), and
+  // the report names them.
   EXPECT_EQ(v.adjacent_pieces.status, Check_status::not_checked);
+  EXPECT_EQ(v.adjacent_pieces.count, v.adjacent_pairs);
+  EXPECT_EQ(v.adjacent_pieces.where.size(), std::min<std::size_t>(v.adjacent_pairs, 100));
   EXPECT_FALSE(v.is_certified());
 }
 

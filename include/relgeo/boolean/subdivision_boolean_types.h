@@ -66,7 +66,8 @@ struct Subdivision_validation {
   /// Far pieces whose supports' boxes meet: each pair certified disjoint
   /// (pass) or listed as undecided.
   Solid_check separated_pieces;
-  /// Neighbouring pieces (see the class comment).
+  /// Neighbouring pieces (see the class comment): not_checked, with their
+  /// number and the first max_listed pairs (as `undecided` issues).
   Solid_check adjacent_pieces;
   /// Face pairs the separation test looked at, and how they ended.
   std::size_t candidate_pairs = 0, separated_pairs = 0, adjacent_pairs = 0;

@@ -232,10 +232,15 @@ inline Subdivision_validation validate_subdivision_solid(const Triangle_mesh<Poi
     for (Index v : ladder.support(0, f)) boxes[f].extend(control.vertices[v].x, control.vertices[v].y, control.vertices[v].z);
   const Face_bvh bvh(boxes);
   std::vector<std::pair<Index, Index>> far;
+  std::vector<Mesh_issue> neighbours;
   bvh.for_each_overlapping_pair([&](Index f, Index g) {
     ++r.candidate_pairs;
-    if (internal::share_a_point(ladder.support(0, f), ladder.support(0, g))) ++r.adjacent_pairs;
-    else far.emplace_back(std::min(f, g), std::max(f, g));
+    if (internal::share_a_point(ladder.support(0, f), ladder.support(0, g))) {
+      ++r.adjacent_pairs;
+      if (neighbours.size() < options.max_listed) neighbours.push_back({Mesh_defect::undecided, {std::min(f, g), std::max(f, g)}});
+    } else {
+      far.emplace_back(std::min(f, g), std::max(f, g));
+    }
   });
   // Iterative deepening: every far pair at the control level, those left at
   // one level of refinement, and so on, so that the budget goes to the
@@ -258,6 +263,7 @@ inline Subdivision_validation validate_subdivision_solid(const Triangle_mesh<Poi
                             " undecided";
   internal::not_checked(r.adjacent_pieces, adjacent_note);
   r.adjacent_pieces.count = r.adjacent_pairs;
+  r.adjacent_pieces.where = std::move(neighbours);  // the pairs not checked (the first max_listed)
   return r;
 }
 

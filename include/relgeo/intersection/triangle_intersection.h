@@ -635,8 +635,10 @@ class Triangle_overlap_test {
     const auto o2 = k_.orientation_2_object();
     const auto project = [&](const P& p, int axis) {  // kept axes (axis+1)%3, (axis+2)%3
       using A = internal::Point_access<P>;
-      return typename K::Point_2(axis == 0 ? A::y(p) : (axis == 1 ? A::z(p) : A::x(p)),
-                                 axis == 0 ? A::z(p) : (axis == 1 ? A::x(p) : A::y(p)));
+      // Braces: relgeo's Point_2 is an aggregate (clang 14 has no
+      // parenthesised aggregate initialisation), CGAL's has a constructor.
+      return typename K::Point_2{axis == 0 ? A::y(p) : (axis == 1 ? A::z(p) : A::x(p)),
+                                 axis == 0 ? A::z(p) : (axis == 1 ? A::x(p) : A::y(p))};
     };
     for (int axis = 2; axis >= 0; --axis) {
       std::array<typename K::Point_2, 3> A, B;

@@ -21,12 +21,7 @@ io::Json boolean_report_json(const Boolean_report_input& in) {
   const Boolean_run& r = *in.run;
   const double volume = r.validation.volume.value;
   io::Json j;
-  j["operation"] = in.operation;
-  j["kernel"] = r.kernel;
-  j["kernel_model"] = r.kernel_model;
-  j["certified"] = r.certified;
-  j["status"] = r.ok ? "ok" : "failed";
-  j["failure"] = r.failure;
+  put_run_header(j, in.operation, r);
   io::Json pairs = io::Json::array();
   for (std::size_t i = 0; i < r.undecided_pairs.size() && i < 100; ++i)
     pairs.push_back({r.undecided_pairs[i].first, r.undecided_pairs[i].second});

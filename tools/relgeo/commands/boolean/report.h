@@ -29,6 +29,18 @@ struct Boolean_report_input {
 /// cgal_volume, cgal_faces, volume_difference, symmetric_difference_volume,
 /// hausdorff}].
 io::Json boolean_report_json(const Boolean_report_input& in);
+/// The fields every Boolean report starts with: operation, kernel,
+/// kernel_model, certified, status, failure (Boolean_run and
+/// Subdivision_boolean_run alike).
+template <class Run>
+void put_run_header(io::Json& j, const std::string& operation, const Run& r) {
+  j["operation"] = operation;
+  j["kernel"] = r.kernel;
+  j["kernel_model"] = r.kernel_model;
+  j["certified"] = r.certified;
+  j["status"] = r.ok ? "ok" : "failed";
+  j["failure"] = r.failure;
+}
 /// {file, vertices, faces, volume} of an operand (volume: sum of the faces' signed tetrahedra in doubles).
 io::Json operand_json(const std::string& file, const Mesh_double& m);
 std::string boolean_report_text(const Boolean_report_input& in);

@@ -48,12 +48,7 @@ io::Json subdivision_validation_json(const Subdivision_validation& v) {
 io::Json subdivision_boolean_report_json(const Subdivision_boolean_report_input& in) {
   const Subdivision_boolean_run& r = *in.run;
   io::Json j;
-  j["operation"] = in.operation;
-  j["kernel"] = r.kernel;
-  j["kernel_model"] = r.kernel_model;
-  j["certified"] = r.certified;
-  j["status"] = r.ok ? "ok" : "failed";
-  j["failure"] = r.failure;
+  put_run_header(j, in.operation, r);
   j["level"] = r.level;
   j["fitted"] = r.fitted;
   j["operands"] = {{"a", operand_json(in.input_a, *in.a)}, {"b", operand_json(in.input_b, *in.b)}};

@@ -554,7 +554,7 @@ class Boolean_engine {
   // Where each output vertex lies on A and on B: input vertices are at
   // themselves; every intersection point was located exactly on its two
   // faces (the most specific location wins: vertex, then edge, then face).
-  void locate_output_vertices(const std::vector<Index>& new_index, Result& r) const {
+  void locate_output_vertices(const std::vector<Index>& new_index, Result& r) {
     using Kind = Surface_location::Kind;
     r.vertex_locations.assign(r.mesh.vertices.size(), {});
     const auto set = [&](Index out, int m, const Surface_location& l) {
@@ -565,7 +565,7 @@ class Boolean_engine {
       for (Index v = 0; v < mesh_[m]->vertices.size(); ++v)
         if (const Index g = new_index[offset_[m] + v]; g != invalid_index) set(g, m, {Kind::vertex, {v, invalid_index}});
     for (const Located_point& l : located_) {
-      const Index g = new_index[find_const(l.point)];
+      const Index g = new_index[find(l.point)];
       if (g == invalid_index) continue;
       for (int m = 0; m < 2; ++m) {
         const Index f = l.face[m];
@@ -578,10 +578,6 @@ class Boolean_engine {
         }
       }
     }
-  }
-  Index find_const(Index x) const {
-    while (parent_[x] != x) x = parent_[x];
-    return x;
   }
 
   std::array<const Mesh*, 2> mesh_;

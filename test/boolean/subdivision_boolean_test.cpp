@@ -309,6 +309,47 @@ TEST(SubdivisionBoolean, SymmetricDifferenceIsRefused) {
   }
 }
 
+// ---- the distance tools ---------------------------------------------------------------
+
+TEST(PointMeshDistance, KnownDistancesAndDegenerateInput) {
+  Mesh tri;
+  tri.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  tri.faces = {{0, 1, 2}};
+  const Point_mesh_distance d(tri);
+  EXPECT_DOUBLE_EQ(d({0.2, 0.2, 3}), 3);       // above the face
+  EXPECT_DOUBLE_EQ(d({-4, 0, 3}), 5);          // nearest: vertex 0
+  EXPECT_DOUBLE_EQ(d({0.5, -3, 4}), 5);        // nearest: edge 0-1
+  Mesh collinear = tri;
+  collinear.vertices[2] = {2, 0, 0};           // a degenerate face: its edges
+  EXPECT_DOUBLE_EQ(Point_mesh_distance(collinear)({1, 3, 4}), 5);
+  EXPECT_EQ(Point_mesh_distance(Mesh{})({0, 0, 0}), std::numeric_limits<double>::infinity());
+  // The nearest face outside the first search box is still found.
+  Mesh far = tri;
+  far.vertices.push_back({1000, 1000, 0});
+  far.vertices.push_back({1001, 1000, 0});
+  far.vertices.push_back({1000, 1001, 0});
+  far.faces.push_back({3, 4, 5});
+  EXPECT_DOUBLE_EQ(Point_mesh_distance(far)({1000.2, 1000.2, -7}), 7);
+}
+
+TEST(LimitSurfaceDistance, SmallAgainstAFinerLimitMeshAndTypedErrors) {
+  const Mesh s = icosphere(1);
+  // Each sample of the limit surface against the limit mesh two levels
+  // finer: positive (the mesh is not the surface), small, and zero samples
+  // when asked for none.
+  const Surface_distance d = limit_surface_distance(s, loop_limit_mesh(s, 3), 2);
+  EXPECT_GT(d.limit_to_polyhedral, 0);
+  EXPECT_LT(d.hausdorff(), 0.01);
+  EXPECT_EQ(d.samples, s.faces.size() * 6);
+  EXPECT_FALSE(limit_surface_distance(s, s, 0).measured());
+  Mesh nan = s;
+  nan.vertices[0].x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW((void)limit_surface_distance(nan, s, 1), Non_finite_input);
+  Mesh pinched = s;
+  pinched.faces.push_back(pinched.faces[0]);  // a non-manifold edge
+  EXPECT_THROW((void)limit_surface_distance(pinched, s, 1), Invalid_input);
+}
+
 // ---- bad operands -----------------------------------------------------------------------
 
 TEST(SubdivisionBoolean, BadOperandsAreRefusedWithTypedErrors) {

@@ -3,6 +3,10 @@
 //  * lpi_orientation/<family>/<subject>: build the LPI point of a line and a
 //    plane, then its orientation against another plane (CGAL Epeck: the
 //    intersection constructed with CGAL::intersection, then orientation);
+//  * exact_stage/<family>/<expansion|gmp>: the two exact stages of
+//    Filtered_exact_kernel alone on orientation_3 cases of the implicit-point
+//    soundness families (relgeo::analysis::implicit_workloads), ratio to GMP:
+//    what decides where the kernel tries expansions before GMP;
 //  * triangle_pair/<family>/<subject>: whether two triangles intersect
 //    (relgeo: do_intersect_triangles; intersect_triangles for the full
 //    classified intersection; CGAL: do_intersect(Triangle_3, Triangle_3)).
@@ -12,9 +16,11 @@
 
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <random>
 
 #include "common/command_line.h"
+#include "relgeo/analysis/implicit_workloads.h"
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel.h"
 
@@ -74,6 +80,57 @@ void lpi_orientation(benchmark::State& state, const std::string& family) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * pts.size()));
 }
 
+// The orientation_3 cases of one implicit-point family, as Filtered_exact_kernel points.
+struct Exact_stage_cases {
+  std::vector<std::optional<relgeo::Filtered_exact_kernel::Implicit_point_3>> points;
+  std::vector<std::array<const relgeo::Filtered_exact_kernel::Implicit_point_3*, 4>> cases;
+};
+const Exact_stage_cases& exact_stage_cases(const std::string& family) {
+  static std::map<std::string, Exact_stage_cases> cache;
+  auto [it, fresh] = cache.try_emplace(family);
+  if (!fresh) return it->second;
+  const relgeo::Filtered_exact_kernel k;
+  const auto point = k.construct_point_3_object();
+  const auto make = k.construct_implicit_point_3_object();
+  for (const auto& w : relgeo::analysis::implicit_workloads(3000, 20261126)) {
+    if (w.name != family) continue;
+    auto& out = it->second;
+    for (const auto& d : w.points) {
+      const auto e = [&](int j) { return point(d.points[j][0], d.points[j][1], d.points[j][2]); };
+      if (d.kind == relgeo::Implicit_point_kind::explicit_point) out.points.push_back(make(e(0)));
+      else if (d.kind == relgeo::Implicit_point_kind::lpi) out.points.push_back(make(e(0), e(1), e(2), e(3), e(4)));
+      else out.points.push_back(make(e(0), e(1), e(2), e(3), e(4), e(5), e(6), e(7), e(8)));
+    }
+    for (const auto& c : w.orientation_3) {
+      std::array<const relgeo::Filtered_exact_kernel::Implicit_point_3*, 4> p{};
+      bool exists = true;
+      for (int i = 0; i < 4; ++i) {
+        exists = exists && out.points[c.p[i]].has_value();
+        if (exists) p[i] = &*out.points[c.p[i]];
+      }
+      if (exists) out.cases.push_back(p);
+    }
+  }
+  return it->second;
+}
+
+template <bool Expansion>
+void exact_stage(benchmark::State& state, const std::string& family) {
+  namespace in = relgeo::internal;
+  const auto& cases = exact_stage_cases(family).cases;
+  const auto sign = [](const auto& h) { return in::orientation_3_sign(h); };
+  const relgeo::Default_fp_environment environment;
+  for (auto _ : state)
+    for (const auto& p : cases) {
+      const in::Defining_doubles<4> inputs(p);
+      if constexpr (Expansion)
+        benchmark::DoNotOptimize(in::expansion_sign(inputs.values(), inputs.degree(), in::implicit_formula(p, sign)));
+      else
+        benchmark::DoNotOptimize(in::integer_sign(inputs.values(), in::implicit_formula(p, sign)));
+    }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * cases.size()));
+}
+
 template <class K, bool Full>
 void triangle_pair(benchmark::State& state, const std::string& family) {
   const K k;
@@ -102,7 +159,9 @@ class Ratio_reporter : public Collecting_reporter {
     for (const auto& [name, ns] : best_) {
       const auto slash = name.rfind('/');
       const std::string group = name.substr(0, slash);
-      const std::string peer = group.rfind("lpi_orientation", 0) == 0 ? "CGAL::Epeck" : "CGAL::Epick";
+      const std::string peer = group.rfind("lpi_orientation", 0) == 0
+                                   ? "CGAL::Epeck"
+                                   : (group.rfind("exact_stage", 0) == 0 ? "gmp" : "CGAL::Epick");
       const auto it = best_.find(group + "/" + peer);
       const double ratio = it == best_.end() ? 0 : ns / it->second;
       std::printf("%-52s %12.1f %10.3f\n", name.c_str(), ns, ratio);
@@ -130,6 +189,10 @@ void register_relgeo_subjects() {
     register_subject("lpi_orientation/" + family + "/interval", lpi_orientation<relgeo::Interval_kernel>, family);
     register_subject("lpi_orientation/" + family + "/failsafe", lpi_orientation<relgeo::Failsafe_kernel<double>>, family);
     register_subject("lpi_orientation/" + family + "/exact", lpi_orientation<relgeo::Exact_kernel>, family);
+  }
+  for (const std::string family : {"random", "on-plane", "same-point", "near-parallel", "collinear", "tpi-point"}) {
+    register_subject("exact_stage/" + family + "/expansion", exact_stage<true>, family);
+    register_subject("exact_stage/" + family + "/gmp", exact_stage<false>, family);
   }
   for (const std::string family : {"random", "near", "touching", "coplanar"}) {
     register_subject("triangle_pair/" + family + "/filtered do_intersect", triangle_pair<relgeo::Filtered_exact_kernel, false>, family);

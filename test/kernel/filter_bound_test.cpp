@@ -134,8 +134,9 @@ TEST(FilterBound, FailsafeDecidesEveryRandomCase) {
 
 TEST(FilterBound, FilteredKernelUsesEveryStage) {
   // Uniform input is decided by the first stage; near-degenerate input in
-  // moderate range by the expansion; beyond it, intervals decide what they
-  // can and GMP the rest.
+  // moderate range by the specialised expansion; beyond it, intervals decide
+  // what they can, generic expansions on scaled input what spans few enough
+  // bits, and GMP the rest.
   using K = Filtered_exact_kernel;
   EXPECT_EQ(K::orientation_2_with_stage({0, 0}, {1, 0.1}, {0.3, 1}).second, Filter_stage::semi_static);
   const auto exact_zero = K::orientation_2_with_stage({0.5, 0.5}, {12, 12}, {24, 24});
@@ -144,10 +145,15 @@ TEST(FilterBound, FilteredKernelUsesEveryStage) {
   const auto tiny = K::orientation_2_with_stage({0.5 + 0x1p-53, 0.5}, {12, 12}, {24, 24});
   EXPECT_EQ(tiny.second, Filter_stage::expansion);
   EXPECT_EQ(tiny.first, Certified_sign::negative);  // p moved right of the diagonal: pqr clockwise
-  const double big = 0x1p600;  // beyond the expansion's range
+  const double big = 0x1p600;  // beyond the specialised expansion's range, a 60-bit span: generic expansions
   const auto huge = K::orientation_2_with_stage({big * (0.5 + 0x1p-53), big * 0.5}, {big * 12, big * 12}, {big * 24, big * 24});
-  EXPECT_EQ(huge.second, Filter_stage::exact);
+  EXPECT_EQ(huge.second, Filter_stage::expansion);
   EXPECT_EQ(huge.first, Certified_sign::negative);
+  // Bits from 2^-600 to 2^502: beyond what exact expansions of degree 2 span
+  // (1032 bits), so GMP; the determinant is -2^-100 against products of 2^1001.
+  const auto wide = K::orientation_2_with_stage({0x1p-600, 0}, {0x1p500, 0x1p500}, {0x1p501, 0x1p501});
+  EXPECT_EQ(wide.second, Filter_stage::exact);
+  EXPECT_EQ(wide.first, Certified_sign::negative);
   const double small = 0x1p-420;  // below the expansion's range; no interval overflows
   const auto small_zero =
       K::orientation_2_with_stage({small * 0.5, small * 0.5}, {small * 12, small * 12}, {small * 24, small * 24});

@@ -13,6 +13,8 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
 #if defined(RELGEO_HAS_CGAL)
@@ -221,6 +223,54 @@ TEST(ImplicitSoundness, TheOracleCoversAboutAMillionCasesPerPredicate) {
 
 TEST(ImplicitSoundness, FilteredExactIsExact) { expect_sound<Filtered_exact_kernel>(run_all<Filtered_exact_kernel>(), true); }
 TEST(ImplicitSoundness, ExactIsExact) { expect_sound<Exact_kernel>(run_all<Exact_kernel>(4), true); }
+// The expansion stage of Filtered_exact_kernel on its own, on every case
+// (the kernel reaches it only when the filter and the intervals fail, and
+// tries it only on LPI points of low degree, where it is faster than GMP):
+// on every case whose inputs' range it accepts, the oracle's sign. It must
+// accept nearly every case of every family, the magnitudes family included
+// (its scaling undoes the magnitude), TPI points and degree 28 included.
+TEST(ImplicitSoundness, FilteredExpansionStageIsExactWhereItApplies) {
+  using K = Filtered_exact_kernel;
+  using P = K::Implicit_point_3;
+  const K k;
+  const auto point = k.construct_point_3_object();
+  const auto make = k.construct_implicit_point_3_object();
+  const Default_fp_environment environment;
+  for (const auto& f : families()) {
+    std::vector<std::optional<P>> pts;
+    for (const auto& d : f.w.points) {
+      const auto e = [&](int j) { return point(d.points[j][0], d.points[j][1], d.points[j][2]); };
+      if (d.kind == Implicit_point_kind::explicit_point) pts.push_back(make(e(0)));
+      else if (d.kind == Implicit_point_kind::lpi) pts.push_back(make(e(0), e(1), e(2), e(3), e(4)));
+      else pts.push_back(make(e(0), e(1), e(2), e(3), e(4), e(5), e(6), e(7), e(8)));
+    }
+    Tally t;  // uncertain: out of the stage's range
+    const auto check = [&](const auto& idx, Certified_sign exact, const auto& sign) {
+      if (exact == Certified_sign::uncertain) return;  // a point does not exist
+      std::array<const P*, std::tuple_size_v<std::decay_t<decltype(idx)>>> p{};
+      for (std::size_t i = 0; i < p.size(); ++i) p[i] = &*pts[idx[i]];
+      ++t.cases;
+      const internal::Defining_doubles<std::tuple_size_v<decltype(p)>> inputs(p);
+      const Certified_sign s = internal::expansion_sign(inputs.values(), inputs.degree(), internal::implicit_formula(p, sign));
+      if (!is_certain(s)) ++t.uncertain;
+      else if (s != exact) ++t.wrong;
+    };
+    for (std::size_t i = 0; i < f.w.orientation_3.size(); ++i)
+      check(f.w.orientation_3[i].p, f.orientation_3[i], [](const auto& h) { return internal::orientation_3_sign(h); });
+    for (std::size_t i = 0; i < f.w.orientation_2.size(); ++i) {
+      const int axis = f.w.orientation_2[i].dropped_axis;
+      check(f.w.orientation_2[i].p, f.orientation_2[i],
+            [axis](const auto& h) { return internal::orientation_2_sign(h, axis); });
+    }
+    for (std::size_t i = 0; i < f.w.compare.size(); ++i)
+      check(f.w.compare[i].p, f.compare[i], [](const auto& h) { return internal::compare_xyz_sign(*h[0], *h[1]); });
+    std::printf("[ expansion stage    ] %-18s %8zu cases %8zu out of range %8zu wrong\n", f.w.name.c_str(), t.cases,
+                t.uncertain, t.wrong);
+    EXPECT_EQ(t.wrong, 0u) << f.w.name;
+    EXPECT_LE(t.uncertain, t.cases / 20) << f.w.name;
+  }
+}
+
 #if defined(RELGEO_HAS_CGAL)
 // CGAL's Epeck builds implicit points by its own lazy exact constructions:
 // exact, like relgeo's exact kernels (every 32nd case, about 30000 per

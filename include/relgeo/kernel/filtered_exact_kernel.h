@@ -10,24 +10,14 @@
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/floating_point.h"
 #include "relgeo/kernel/internal/determinants.h"
-#include "relgeo/kernel/internal/exact_dyadic.h"
+#include "relgeo/kernel/internal/filtered_predicate.h"
 #include "relgeo/kernel/internal/expansion_orientation.h"
 #include "relgeo/kernel/internal/expansion_orientation_3.h"
 #include "relgeo/kernel/internal/kernel_base.h"
 #include "relgeo/kernel/internal/implicit_staged.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
-#include "relgeo/core/interval.h"
 
 namespace relgeo {
-
-/// Which stage of Filtered_exact_kernel decided a predicate.
-enum class Filter_stage {
-  semi_static,  ///< Fortune's epsilon test
-  interval,     ///< interval arithmetic
-  expansion,    ///< floating-point expansions (exact; coordinates of moderate range)
-  exact,        ///< GMP integers
-  undecidable   ///< NaN or infinite input
-};
 
 /// \brief Double-coordinate kernel with exact predicates (like CGAL's Epick):
 /// each predicate tries
@@ -35,15 +25,19 @@ enum class Filter_stage {
 ///     every floating-point environment; the later stages run in the default
 ///     one, established for them when the caller changed it),
 ///  2. when every coordinate is 0 or of moderate magnitude, the exact sign in
-///     floating-point expansions, which always decides:
-///     orientation_2 in [2^-400, 2^500] as a sum of 16 doubles
+///     floating-point expansions specialised for the predicate, which always
+///     decides: orientation_2 in [2^-400, 2^500] as a sum of 16 doubles
 ///     (internal/expansion_orientation.h), orientation_3 in [2^-250, 2^300]
 ///     (internal/expansion_orientation_3.h: the determinant of the rounded
 ///     differences exactly, plus their tails to first order under a proven
 ///     bound, else everything exactly),
-///  3. otherwise interval arithmetic (relgeo::Interval), then
-///  4. exact evaluation in GMP integers (internal/exact_dyadic.h),
+///  3. otherwise the generic filtered predicate (internal/filtered_predicate.h)
+///     on the formula of internal/determinants.h: intervals, then generic
+///     expansions on the coordinates scaled by a power of two (exact when
+///     the coordinates' bits span at most 687 positions in 3D), then GMP
+///     integers,
 /// and returns the first definite answer, which is always the exact sign.
+/// Predicates on implicit points go the same way (internal/implicit_staged.h).
 /// Constructions are plain double.
 ///
 /// The only `uncertain` answer is for NaN or infinite coordinates, whose sign
@@ -118,14 +112,14 @@ class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel
       return {Certified_sign::zero, Filter_stage::semi_static};
     const Default_fp_environment environment;
     // In its range the expansion always decides, and faster than intervals
-    // that may not (56 -> 41 ns per call on near-collinear input); outside, intervals
-    // are tried before GMP.
+    // that may not (56 -> 41 ns per call on near-collinear input).
     if (const auto e = internal::expansion_orientation_2(p.x, p.y, q.x, q.y, r.x, r.y))
       return {*e, Filter_stage::expansion};
-    const Certified_sign s =
-        internal::orientation_2_determinant<Interval>(p.x, p.y, q.x, q.y, r.x, r.y).sign();
-    if (is_certain(s)) return {s, Filter_stage::interval};
-    return {internal::exact_orientation_2(p.x, p.y, q.x, q.y, r.x, r.y), Filter_stage::exact};
+    const std::array<double, 6> c{p.x, p.y, q.x, q.y, r.x, r.y};
+    return internal::filtered_exact_sign(c, 2, true, [&c](const auto& to) {
+      return internal::certified_sign_of(
+          internal::orientation_2_determinant(to(c[0]), to(c[1]), to(c[2]), to(c[3]), to(c[4]), to(c[5])));
+    });
   }
   [[gnu::noinline]] static std::pair<Certified_sign, Filter_stage> after_semi_static_3(
       const Point_3& p, const Point_3& q, const Point_3& r, const Point_3& s) {
@@ -138,11 +132,11 @@ class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel
     // As in 2D: in its range the expansion always decides, faster than
     // intervals (which decide 31% of near-coplanar input) and GMP.
     if (const auto e = internal::expansion_orientation_3(c)) return {*e, Filter_stage::expansion};
-    const Certified_sign o = internal::orientation_3_determinant<Interval>(
-                                 p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z, s.x, s.y, s.z)
-                                 .sign();
-    if (is_certain(o)) return {o, Filter_stage::interval};
-    return {internal::exact_orientation_3(c), Filter_stage::exact};
+    return internal::filtered_exact_sign(c, 3, true, [&c](const auto& to) {
+      return internal::certified_sign_of(internal::orientation_3_determinant(
+          to(c[0]), to(c[1]), to(c[2]), to(c[3]), to(c[4]), to(c[5]), to(c[6]), to(c[7]), to(c[8]), to(c[9]),
+          to(c[10]), to(c[11])));
+    });
   }
 };
 

@@ -18,8 +18,8 @@
 //  | Failsafe_kernel<T>     | homogeneous coordinates with | a rounding-error bound in T (filtered_value |
 //  |                        | their rounding-error bound  | .h); uncertain when it does not exclude 0   |
 //  | Interval_kernel        | interval homogeneous coords | interval arithmetic; uncertain when 0 is in |
-//  | Filtered_exact_kernel  | its defining doubles and    | error bound -> intervals -> GMP integers:   |
-//  |                        | error-bounded coordinates   | always exact                                |
+//  | Filtered_exact_kernel  | its defining doubles and    | error bound -> intervals -> expansions ->   |
+//  |                        | error-bounded coordinates   | GMP integers: always exact                  |
 //  | Exact_kernel           | the exact rational point    | exact                                       |
 //
 // The functors every model provides (fetched through the kernel object):

@@ -68,22 +68,24 @@ inline std::size_t grow(const double* e, std::size_t n, double b, double* h) {
   return k;
 }
 
-/// h = e + f: the components of both merged by magnitude, then added from
-/// the smallest up, each error kept (Shewchuk's Fast-Expansion-Sum with zero
-/// elimination; every step is a two_sum, so it is exact without the
-/// magnitude condition of Fast-Two-Sum).
-inline std::size_t sum(const double* e, std::size_t n, const double* f, std::size_t m, double* h) {
+/// h = e + f_sign * f (f_sign = 1 or -1): the components of both merged by
+/// magnitude, then added from the smallest up, each error kept (Shewchuk's
+/// Fast-Expansion-Sum with zero elimination; every step is a two_sum, so it
+/// is exact without the magnitude condition of Fast-Two-Sum).
+inline std::size_t sum(const double* e, std::size_t n, const double* f, std::size_t m, double* h,
+                       double f_sign = 1.0) {
   if (n == 0 || m == 0) {
     const double* g = n == 0 ? f : e;
     const std::size_t len = n == 0 ? m : n;
-    for (std::size_t i = 0; i < len; ++i) h[i] = g[i];
+    const double s = n == 0 ? f_sign : 1.0;
+    for (std::size_t i = 0; i < len; ++i) h[i] = s * g[i];
     return len;
   }
   std::size_t i = 0, j = 0, k = 0;
   // The next component in order of magnitude (ties: e first).
   const auto next = [&]() -> double {
     if (j == m || (i < n && std::abs(e[i]) <= std::abs(f[j]))) return e[i++];
-    return f[j++];
+    return f_sign * f[j++];
   };
   double q = next();
   while (i < n || j < m) {
@@ -122,6 +124,7 @@ inline std::size_t negate(const double* e, std::size_t n, double* h) {
 
 /// h = e, shortened: adjacent components combined where their sum is exact
 /// (Shewchuk's Compress). \pre e is a nonoverlapping expansion without zeros.
+/// h may be e (each pass writes only components it has already read).
 inline std::size_t compress(const double* e, std::size_t n, double* h) {
   if (n == 0) return 0;
   // Downward pass, from the largest component: a running sum q, stored at

@@ -17,7 +17,7 @@
 // All are homogeneous polynomials in the input coordinates with integer
 // coefficients, so scaling every input by a power of two scales each point's
 // coordinates by a positive factor and keeps every sign below: the exact
-// stage evaluates them on integers (exact_dyadic.h's scaling).
+// stages evaluate them on scaled inputs (filtered_predicate.h).
 //
 // Predicates multiply through by the W's and correct the sign by sign(W):
 //  * orientation of four points, the first explicit (pivot a):

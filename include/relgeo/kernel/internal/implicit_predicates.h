@@ -1,6 +1,6 @@
 // relgeo/kernel/internal/implicit_predicates.h — the signs of the predicates
 // on homogeneous points, for any number type that can report a certified
-// sign (Filtered_value, Interval, GMP integers, rationals).
+// sign (Filtered_value, Interval, expansions, GMP integers, rationals).
 //
 // Each predicate finds an explicit point to pivot on (the cheaper formula of
 // implicit_coordinates.h), reorders the arguments with the sign of the
@@ -14,18 +14,16 @@
 
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/core/interval.h"
+#include "relgeo/kernel/internal/filtered_predicate.h"
 #include "relgeo/kernel/internal/filtered_value.h"
 #include "relgeo/kernel/internal/implicit_coordinates.h"
 
 namespace relgeo::internal {
 
-inline Certified_sign certified_sign_of(const Interval& v) { return v.sign(); }
 template <class T>
 Certified_sign certified_sign_of(const Filtered_value<T>& v) {
   return v.sign();
 }
-inline Certified_sign certified_sign_of(const mpz_class& v) { return static_cast<Certified_sign>(sgn(v)); }
-inline Certified_sign certified_sign_of(const mpq_class& v) { return static_cast<Certified_sign>(sgn(v)); }
 
 template <class NT>
 Certified_sign sign_of_w(const Homogeneous_3<NT>& h) {

@@ -1,10 +1,11 @@
-// The expansion arithmetic of kernel/internal/expansion.h against GMP
-// rationals: every result has the exact value, is a nonoverlapping expansion
+// The expansion arithmetic of kernel/internal/expansion.h and
+// dynamic_expansion.h against GMP rationals: every result has the exact value, is a nonoverlapping expansion
 // in increasing magnitude without zeros, and has the sign of its last
 // component; on random, cancelling, power-of-two and subnormal operands.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -12,7 +13,10 @@
 #include <vector>
 
 #include "relgeo/core/dyadic.h"
+#include "relgeo/kernel/internal/determinants.h"
+#include "relgeo/kernel/internal/exact_dyadic.h"
 #include "relgeo/kernel/internal/expansion.h"
+#include "relgeo/kernel/internal/filtered_predicate.h"
 
 namespace relgeo::internal {
 namespace {
@@ -177,6 +181,106 @@ TEST(Expansion, CompressKeepsTheValueInFewComponents) {
   e.compress();
   ASSERT_TRUE(well_formed(e, v));
   EXPECT_LE(e.size(), 4u);  // 180 bits of value in 53-bit components
+}
+
+// Dynamic_expansion (internal/dynamic_expansion.h) and the scaling of the
+// generic filtered predicate (internal/filtered_predicate.h).
+
+::testing::AssertionResult well_formed(const Dynamic_expansion& e, const mpq_class& expected) {
+  mpq_class v = 0;
+  const double* previous = nullptr;
+  for (const double& x : e) {
+    if (x == 0 || !std::isfinite(x)) return ::testing::AssertionFailure() << "component " << x;
+    if (previous && lowest_bit(x) <= highest_bit(*previous)) return ::testing::AssertionFailure() << "overlap";
+    v += exact_rational(x);
+    previous = &x;
+  }
+  if (v != expected) return ::testing::AssertionFailure() << "value " << v << " != " << expected;
+  const int s = sgn(v);
+  if (to_int(e.sign()) != (s > 0 ? 1 : s < 0 ? -1 : 0)) return ::testing::AssertionFailure() << "wrong sign";
+  return ::testing::AssertionSuccess();
+}
+
+TEST(DynamicExpansion, RandomPolynomialsUpToDegreeTwelveAreExact) {
+  // Random expression trees: leaves are doubles, each node a sum, difference
+  // or product of two earlier values, up to degree 12 (the lengths grow far
+  // beyond the small buffer).
+  Operands o(2026, -40, 40);
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<Dynamic_expansion> e;
+    std::vector<mpq_class> q;
+    std::vector<int> degree;
+    for (int i = 0; i < 6; ++i) {
+      const double x = o.next();
+      e.emplace_back(x), q.push_back(exact_rational(x)), degree.push_back(1);
+    }
+    for (int step = 0; step < 10; ++step) {
+      const std::size_t a = o.engine()() % e.size(), b = o.engine()() % e.size();
+      const int op = static_cast<int>(o.engine()() % 3);
+      if (op == 2 && degree[a] + degree[b] > 12) continue;
+      const Dynamic_expansion r = op == 0 ? e[a] + e[b] : (op == 1 ? e[a] - e[b] : e[a] * e[b]);
+      const mpq_class v = op == 0 ? mpq_class(q[a] + q[b]) : (op == 1 ? mpq_class(q[a] - q[b]) : mpq_class(q[a] * q[b]));
+      ASSERT_TRUE(well_formed(r, v)) << trial << " step " << step;
+      e.push_back(r), q.push_back(v), degree.push_back(op == 2 ? degree[a] + degree[b] : std::max(degree[a], degree[b]));
+    }
+    const Dynamic_expansion& last = e.back();
+    ASSERT_TRUE(well_formed(last * last - last * last, mpq_class(0)));  // exact cancellation: no component
+    EXPECT_EQ((last * last - last * last).size(), 0u);
+  }
+}
+
+TEST(DynamicExpansion, OverflowMakesTheSignUncertainAndStaysSo) {
+  const Dynamic_expansion big(0x1p600);
+  const Dynamic_expansion square = big * big;  // 2^1200: infinite
+  EXPECT_EQ(square.sign(), Certified_sign::uncertain);
+  EXPECT_EQ((square - square).sign(), Certified_sign::uncertain);           // inf - inf
+  EXPECT_EQ((square * Dynamic_expansion(-1.0) + big).sign(), Certified_sign::uncertain);
+  EXPECT_EQ((big * Dynamic_expansion(0x1p400)).sign(), Certified_sign::positive);  // 2^1000: finite
+}
+
+TEST(FilteredPredicate, ExpansionScalingAcceptsExactlyTheSpanItProves) {
+  // Degree 3: shift 994 / 3 - 2 - 1 = 328 for inputs below 2^1; the lowest
+  // set bit must stay at 2^-358 or above after it: 2^-686 before.
+  const std::array<double, 2> edge{1.0, 0x1p-686}, beyond{1.0, 0x1p-687};
+  EXPECT_TRUE(Expansion_scaling(edge, 3).exact());
+  EXPECT_FALSE(Expansion_scaling(beyond, 3).exact());
+  // Degree 28 (four TPI points): a 53-bit double spans 53 positions, within 71.
+  const std::array<double, 1> full{0x1.fffffffffffffp0};
+  EXPECT_TRUE(Expansion_scaling(full, 28).exact());
+  const std::array<double, 2> wide{1.0, 0x1p-75};
+  EXPECT_FALSE(Expansion_scaling(wide, 28).exact());
+  // Scaling is by a power of two, exactly.
+  const Expansion_scaling scale(edge, 3);
+  EXPECT_EQ(*scale(0x1p-686).begin(), 0x1p-358);
+}
+
+TEST(FilteredPredicate, ExpansionsAgreeWithGmpUpToTheEdgeOfTheSpan) {
+  // orientation_3 of the origin, q, r (20-bit significands, magnitude about
+  // 1) and s = 2^-640 (a q + b r) moved off the plane by -1, 0 or 1 units of
+  // 2^-661 per coordinate: bits from 2^-661 to 2^1, near the 687 positions
+  // degree 3 allows, so the scaled products reach down to 2^-999 (normal
+  // range ends at 2^-1022: close). Exact zeros included.
+  std::mt19937_64 g(7);
+  const auto significand = [&] { return std::ldexp(static_cast<double>((g() >> 44) | 1), -20) * (g() % 2 ? 1 : -1); };
+  int decided = 0, zeros = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::array<double, 12> c{};
+    for (int i = 3; i < 9; ++i) c[i] = significand();
+    const double a = static_cast<double>(g() % 7) - 3, b = static_cast<double>(g() % 7) - 3;
+    for (int i = 0; i < 3; ++i)
+      c[9 + i] = std::ldexp(a * c[3 + i] + b * c[6 + i], -640) + std::ldexp(static_cast<double>(g() % 3) - 1, -661);
+    const auto formula = [&c](const auto& to) {
+      return certified_sign_of(orientation_3_determinant(to(c[0]), to(c[1]), to(c[2]), to(c[3]), to(c[4]), to(c[5]),
+                                                         to(c[6]), to(c[7]), to(c[8]), to(c[9]), to(c[10]), to(c[11])));
+    };
+    const Certified_sign s = expansion_sign(c, 3, formula);
+    if (!is_certain(s)) continue;
+    ++decided;
+    zeros += s == Certified_sign::zero;
+    ASSERT_EQ(s, exact_orientation_3(c)) << trial;
+  }
+  EXPECT_EQ(decided, 20000);
+  EXPECT_GT(zeros, 500);
 }
 
 }  // namespace

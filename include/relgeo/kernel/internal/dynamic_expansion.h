@@ -39,6 +39,9 @@ class Dynamic_expansion {
   }
 
   std::size_t size() const { return c_.size(); }
+  /// The components, in increasing magnitude.
+  const double* begin() const { return c_.data(); }
+  const double* end() const { return c_.data() + c_.size(); }
   /// The exact sign; `uncertain` when a component overflowed.
   Certified_sign sign() const {
     if (!std::all_of(c_.begin(), c_.end(), [](double x) { return std::isfinite(x); })) return Certified_sign::uncertain;

@@ -90,7 +90,7 @@ class Defining_doubles {
   /// Whether expansions are worth trying before GMP. Measured on the
   /// soundness families (`relgeo_intersection_benchmark
   /// --benchmark_filter=exact_stage`, each exact stage alone): on LPI points
-  /// of degree 7 expansions take 0.46-0.98 of GMP's time; at degrees 10-13
+  /// of degree 7 expansions take 0.46-1.05 of GMP's time; at degrees 10-13
   /// 1.4x, with TPI points 1.9x, on the random mix (degrees to 28) 4x.
   bool expansions_worthwhile() const { return degree_ <= 9 && !has_tpi_; }
 

@@ -11,11 +11,11 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <random>
 #include <string>
 
 #include "boolean_inputs.h"
+#include "cgal_data_solids.h"
 #include "relgeo/boolean.h"
 #include "relgeo/kernel.h"
 #include "relgeo/kernel/cgal_kernel.h"
@@ -89,36 +89,19 @@ TEST(BooleanCgalOracle, SpheresAndTorus) {
 // elephant), each against a copy rotated by 0.5 rad about z, tilted and moved
 // by a tenth of its size.
 TEST(BooleanCgalOracle, CgalDataSetAgainstMovedCopies) {
-  const std::filesystem::path dir(RELGEO_CGAL_MESH_DIR);
-  if (!std::filesystem::exists(dir / "elephant.off")) GTEST_SKIP() << "CGAL's data set is not available";
+  if (!cgal_data_available()) GTEST_SKIP() << "CGAL's data set is not available";
   std::size_t compared = 0;
-  std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.path().extension() == ".off") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  for (const auto& file : files) {
-    Mesh m;
-    try {
-      m = read_mesh(file.string());
-    } catch (const Error&) {
-      continue;
-    }
-    if (m.faces.empty() || (m.faces.size() > 6000 && file.filename() != "elephant.off")) continue;
-    if (!check_mesh(m).is_valid() || volume(m) <= 0) continue;  // open, non-manifold or inverted: not a solid
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (const auto& p : m.vertices) {
-      const double c[3] = {p.x, p.y, p.z};
-      for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], c[i]), hi[i] = std::max(hi[i], c[i]);
-    }
-    const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  for (const auto& [name, m, size] : cgal_data_solids([](const std::string& file, std::size_t faces) {
+         return faces <= 6000 || file == "elephant.off";
+       })) {
     const Mesh copy = rigidly_moved(m, 0.5, 0.3, {0.1 * size, 0.05 * size, 0.02 * size});
     try {
       (void)boolean(m, copy, Op::union_of);  // refuses self-intersecting models of the set
     } catch (const Invalid_operand& e) {
-      EXPECT_EQ(e.defect(), Mesh_defect::self_intersection) << file.filename();
+      EXPECT_EQ(e.defect(), Mesh_defect::self_intersection) << name;
       continue;
     }
-    expect_matches_cgal(m, copy, file.filename().string());
+    expect_matches_cgal(m, copy, name);
     ++compared;
   }
   std::printf("[ CGAL data set ] %zu models compared with CGAL's corefinement (Epeck)\n", compared);

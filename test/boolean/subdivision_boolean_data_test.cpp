@@ -10,11 +10,11 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "boolean_inputs.h"
+#include "cgal_data_solids.h"
 #include "relgeo/boolean/subdivision_boolean.h"
 #include "relgeo/mesh/mesh_io.h"
 #include "relgeo/mesh/validity.h"
@@ -22,35 +22,12 @@
 namespace relgeo::test {
 namespace {
 
-double size_of(const Mesh& m) {
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (const auto& p : m.vertices) {
-    const double c[3] = {p.x, p.y, p.z};
-    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], c[i]), hi[i] = std::max(hi[i], c[i]);
-  }
-  return std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-}
-
 TEST(SubdivisionBooleanData, CgalModelsAgainstMovedCopies) {
-  const std::filesystem::path dir(RELGEO_CGAL_MESH_DIR);
-  if (!std::filesystem::exists(dir / "elephant.off")) GTEST_SKIP() << "CGAL's data set is not available";
-  std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.path().extension() == ".off") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
+  if (!cgal_data_available()) GTEST_SKIP() << "CGAL's data set is not available";
   std::size_t computed = 0, refused = 0, separated = 0;
-  for (const auto& file : files) {
-    Mesh m;
-    try {
-      m = read_mesh(file.string());
-    } catch (const Error&) {
-      continue;
-    }
-    // Closed solids small enough for a test (level 1 quadruples the faces).
-    if (m.faces.empty() || m.faces.size() > 600 || !check_mesh(m).is_valid() || volume(m) <= 0) continue;
-    const double size = size_of(m);
+  // Solids small enough for a test (level 1 quadruples the faces).
+  for (const auto& [name, m, size] : cgal_data_solids([](const std::string&, std::size_t faces) { return faces <= 600; })) {
     const Mesh copy = rigidly_moved(m, 0.5, 0.3, {0.1 * size, 0.05 * size, 0.02 * size});
-    const std::string name = file.filename().string();
     try {
       const auto r = subdivision_boolean(m, copy, Boolean_operation::union_of, 1);
       ASSERT_TRUE(r.ok()) << name << ": " << r.failure;

@@ -91,7 +91,9 @@ void expect_sound(bool never_undecided) {
     for (bool fast : {true, false}) {
       const Tally t = check<K>(f, fast);
       EXPECT_EQ(t.wrong, 0u) << K::name() << " " << f.w.name;
-      if (never_undecided) EXPECT_EQ(t.undecided, 0u) << K::name() << " " << f.w.name;
+      if (never_undecided) {
+        EXPECT_EQ(t.undecided, 0u) << K::name() << " " << f.w.name;
+      }
     }
 }
 
@@ -144,7 +146,9 @@ TEST(TriangleIntersectionCgal, ThePointsAreCgalsExactly) {
       const auto e = sorted_unique(expected), o = sorted_unique(ours);
       // Every CGAL point is ours; ours beyond CGAL's lie on its polygon's edges (collinear vertices).
       for (const auto& x : e) EXPECT_TRUE(std::binary_search(o.begin(), o.end(), x)) << f.w.name << " pair " << i;
-      if (e.size() <= 2) EXPECT_EQ(o, e) << f.w.name << " pair " << i;
+      if (e.size() <= 2) {
+        EXPECT_EQ(o, e) << f.w.name << " pair " << i;
+      }
       ++compared;
     }
   std::printf("[ exact vs CGAL ] %zu intersections compared point by point\n", compared);

@@ -132,7 +132,9 @@ TYPED_TEST(TriangleIntersection, EveryConfigurationInEveryVertexOrder) {
       }
     } while (std::next_permutation(pa.begin(), pa.end()));
   }
-  if (K::has_exact_predicates) EXPECT_EQ(undecided, 0u);
+  if (K::has_exact_predicates) {
+    EXPECT_EQ(undecided, 0u);
+  }
   std::printf("[ %s ] %zu runs, %zu undecided, %zu decided after a perturbation\n", K::name().c_str(), runs,
               undecided, perturbed);
 }
@@ -162,8 +164,9 @@ TYPED_TEST(TriangleIntersection, BadInput) {
   const K k;
   const std::array<int, 3> id{0, 1, 2};
   const T3 flat{{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}};
-  if constexpr (K::has_exact_predicates)
+  if constexpr (K::has_exact_predicates) {
     EXPECT_THROW((void)intersect_triangles(triangle(k, flat, id), triangle(k, kBase, id), k), Precondition_violation);
+  }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const T3 with_nan{{{nan, 0, 0}, {1, 0, 1}, {0, 1, 1}}};
   if constexpr (K::has_exact_constructions) {  // such a kernel refuses the point itself

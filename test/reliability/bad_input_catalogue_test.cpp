@@ -110,7 +110,6 @@ struct Entry {
 };
 
 std::vector<Entry> catalogue() {
-  const Mesh_check_options open_ok{.require_closed = false};
   return {
       // ---- empty and truncated files ----------------------------------------------
       {"empty.off", "0 bytes", [] { return read_error_unreadable("empty.off", {"is empty"}); }},

@@ -90,17 +90,10 @@ const Exact_stage_cases& exact_stage_cases(const std::string& family) {
   auto [it, fresh] = cache.try_emplace(family);
   if (!fresh) return it->second;
   const relgeo::Filtered_exact_kernel k;
-  const auto point = k.construct_point_3_object();
-  const auto make = k.construct_implicit_point_3_object();
   for (const auto& w : relgeo::analysis::implicit_workloads(3000, 20261126)) {
     if (w.name != family) continue;
     auto& out = it->second;
-    for (const auto& d : w.points) {
-      const auto e = [&](int j) { return point(d.points[j][0], d.points[j][1], d.points[j][2]); };
-      if (d.kind == relgeo::Implicit_point_kind::explicit_point) out.points.push_back(make(e(0)));
-      else if (d.kind == relgeo::Implicit_point_kind::lpi) out.points.push_back(make(e(0), e(1), e(2), e(3), e(4)));
-      else out.points.push_back(make(e(0), e(1), e(2), e(3), e(4), e(5), e(6), e(7), e(8)));
-    }
+    for (const auto& d : w.points) out.points.push_back(relgeo::analysis::build_implicit_point(k, d));
     for (const auto& c : w.orientation_3) {
       std::array<const relgeo::Filtered_exact_kernel::Implicit_point_3*, 4> p{};
       bool exists = true;

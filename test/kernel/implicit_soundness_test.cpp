@@ -108,8 +108,6 @@ void count(Tally& t, Certified_sign exact, Certified_sign answer) {
 template <class K>
 Family_tally run(const Family_with_signs& f, std::size_t stride) {
   const K k;
-  const auto point = k.construct_point_3_object();
-  const auto make = k.construct_implicit_point_3_object();
   const auto orient3 = k.implicit_orientation_3_object();
   const auto orient2 = k.implicit_orientation_2_object();
   const auto compare = k.compare_xyz_3_object();
@@ -118,14 +116,7 @@ Family_tally run(const Family_with_signs& f, std::size_t stride) {
   std::vector<std::optional<P>> pts;
   pts.reserve(f.w.points.size());
   for (std::size_t i = 0; i < f.w.points.size(); ++i) {
-    const auto& d = f.w.points[i];
-    const auto e = [&](int j) { return point(d.points[j][0], d.points[j][1], d.points[j][2]); };
-    std::optional<P> p;
-    switch (d.kind) {
-      case Implicit_point_kind::explicit_point: p = make(e(0)); break;
-      case Implicit_point_kind::lpi: p = make(e(0), e(1), e(2), e(3), e(4)); break;
-      default: p = make(e(0), e(1), e(2), e(3), e(4), e(5), e(6), e(7), e(8));
-    }
+    std::optional<P> p = analysis::build_implicit_point(k, f.w.points[i]);
     // A point the oracle says does not exist must not be built by a
     // certified kernel; one that exists may be refused (counted uncertain).
     ++t.construction.cases;
@@ -234,17 +225,10 @@ TEST(ImplicitSoundness, FilteredExpansionStageIsExactWhereItApplies) {
   using K = Filtered_exact_kernel;
   using P = K::Implicit_point_3;
   const K k;
-  const auto point = k.construct_point_3_object();
-  const auto make = k.construct_implicit_point_3_object();
   const Default_fp_environment environment;
   for (const auto& f : families()) {
     std::vector<std::optional<P>> pts;
-    for (const auto& d : f.w.points) {
-      const auto e = [&](int j) { return point(d.points[j][0], d.points[j][1], d.points[j][2]); };
-      if (d.kind == Implicit_point_kind::explicit_point) pts.push_back(make(e(0)));
-      else if (d.kind == Implicit_point_kind::lpi) pts.push_back(make(e(0), e(1), e(2), e(3), e(4)));
-      else pts.push_back(make(e(0), e(1), e(2), e(3), e(4), e(5), e(6), e(7), e(8)));
-    }
+    for (const auto& d : f.w.points) pts.push_back(analysis::build_implicit_point(k, d));
     Tally t;  // uncertain: out of the stage's range
     const auto check = [&](const auto& idx, Certified_sign exact, const auto& sign) {
       if (exact == Certified_sign::uncertain) return;  // a point does not exist

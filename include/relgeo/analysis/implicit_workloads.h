@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -41,6 +42,20 @@ struct Implicit_point_definition {
   Implicit_point_kind kind = Implicit_point_kind::explicit_point;
   std::array<std::array<double, 3>, 9> points{};
 };
+
+/// The point a definition describes, built by kernel K (empty when K
+/// refuses it: the point does not exist, or K cannot certify that it does).
+template <class K>
+std::optional<typename K::Implicit_point_3> build_implicit_point(const K& k, const Implicit_point_definition& d) {
+  const auto point = k.construct_point_3_object();
+  const auto make = k.construct_implicit_point_3_object();
+  const auto e = [&](int j) { return point(d.points[j][0], d.points[j][1], d.points[j][2]); };
+  switch (d.kind) {
+    case Implicit_point_kind::explicit_point: return make(e(0));
+    case Implicit_point_kind::lpi: return make(e(0), e(1), e(2), e(3), e(4));
+    default: return make(e(0), e(1), e(2), e(3), e(4), e(5), e(6), e(7), e(8));
+  }
+}
 
 struct Implicit_orientation_3_case {
   std::array<std::uint32_t, 4> p;

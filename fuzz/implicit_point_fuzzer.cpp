@@ -56,8 +56,6 @@ template <class K>
 void check(Input& in, const std::vector<Coordinates>& pool) {
   const K k;
   const std::string who = K::name();
-  const auto point = k.construct_point_3_object();
-  const auto make = k.construct_implicit_point_3_object();
   const auto orient3 = k.implicit_orientation_3_object();
   const auto orient2 = k.implicit_orientation_2_object();
   const auto compare = k.compare_xyz_3_object();
@@ -72,17 +70,8 @@ void check(Input& in, const std::vector<Coordinates>& pool) {
     analysis::Implicit_point_definition d;
     d.kind = static_cast<Implicit_point_kind>(in.byte() % 3);
     for (auto& p : d.points) p = pool[in.below(pool.size())];
-    const auto e = [&](int j) { return point(d.points[j][0], d.points[j][1], d.points[j][2]); };
     std::optional<P> p;
-    const bool built = typed_errors_only(
-        [&] {
-          switch (d.kind) {
-            case Implicit_point_kind::explicit_point: p = make(e(0)); break;
-            case Implicit_point_kind::lpi: p = make(e(0), e(1), e(2), e(3), e(4)); break;
-            default: p = make(e(0), e(1), e(2), e(3), e(4), e(5), e(6), e(7), e(8));
-          }
-        },
-        who + " construct");
+    const bool built = typed_errors_only([&] { p = analysis::build_implicit_point(k, d); }, who + " construct");
     if (!built) p.reset();
     std::optional<test::Exact_point> x;
     if (finite) x = test::oracle_point(d);

@@ -145,7 +145,13 @@ void check_enclosure(const Mesh_d& m) {
     if (!t.is_isolated(v) && !t.is_boundary_vertex(v) && n != 3 && n != 4 && n != 6) return;
   }
   const auto exact = Loop_subdivider<Exact_kernel>().refine(to_kernel<Exact_kernel>(m), 1);
-  const auto interval = Loop_subdivider<Interval_kernel>().refine(to_kernel<Interval_kernel>(m), 1);
+  // Near the largest double, interval refinement may refuse (typed) what
+  // exact refinement computes: its outward rounding overflows first. That
+  // refusal is the contract check<Interval_kernel> checks; nothing to compare.
+  Triangle_mesh<Interval_kernel::Point_3> interval;
+  if (!typed_errors_only([&] { interval = Loop_subdivider<Interval_kernel>().refine(to_kernel<Interval_kernel>(m), 1); },
+                         "interval refinement"))
+    return;
   require(exact.faces == interval.faces, "interval and exact refinement: same faces");
   for (std::size_t i = 0; i < exact.vertices.size(); ++i) {
     const auto& e = exact.vertices[i];

@@ -5,8 +5,8 @@
 #   bash scripts/relgeo.sh test         # deps + Release build + all tests + sanitizer subset
 #   bash scripts/relgeo.sh sanitize     # deps + ASan/UBSan build of the library's unit suites
 #   bash scripts/relgeo.sh fuzz [SECONDS] [HARNESS...]
-#                                       # deps + libFuzzer build + a campaign: SECONDS (default
-#                                       # 3600) per harness, one after another, niced
+#                                       # deps + libFuzzer build + a campaign: SECONDS of CPU
+#                                       # (default 3600) per harness, one after another, niced
 #
 # Debian 12. Missing apt packages are installed when run as root (or through
 # sudo when it exists). Environment: RELGEO_BUILD_DIR (default build),
@@ -188,11 +188,15 @@ run_fuzz_smoke() {
   log "fuzz smoke passed: ${#harnesses[@]} harnesses"
 }
 
-# A campaign: SECONDS of wall time per harness (default 3600), one harness
-# after another, niced, in libFuzzer's fork mode so that a finding is saved
-# and the campaign goes on. Corpora grow in $fuzz_work/corpus/NAME (seeded
-# from fuzz/corpus/NAME), findings land in $fuzz_work/findings/NAME-*, logs in
-# $fuzz_work/logs; the summary gives the CPU time each harness used.
+# A campaign: SECONDS of CPU time per harness (default 3600; user + system of
+# the fuzzer and its fork-mode jobs, so a busy machine lengthens the wall time
+# instead of shortening the campaign; a wall-time cap of 4 x SECONDS stops a
+# starved one), one harness after another, niced, in libFuzzer's fork mode so
+# that a finding is saved and the campaign goes on. Corpora grow in
+# $fuzz_work/corpus/NAME (seeded from fuzz/corpus/NAME), findings land in
+# $fuzz_work/findings/NAME-*, logs in $fuzz_work/logs; the summary gives the
+# CPU time each harness used. RELGEO_FUZZ_BUILD_DIR lets a campaign run on its
+# own build while the smoke rebuilds the default one.
 run_fuzz_campaign() {
   local seconds=${1:-3600}; shift || true
   [[ $seconds =~ ^[0-9]+$ ]] || { log "error: fuzz SECONDS must be a number, got '$seconds'"; exit 2; }
@@ -205,18 +209,57 @@ run_fuzz_campaign() {
     [[ -x $bin ]] || { log "error: no harness '$h' (have: $(fuzz_harnesses | tr '\n' ' '))"; exit 2; }
     mkdir -p "$corpus"
     cp -n "$root/fuzz/corpus/$h"/* "$corpus/" 2>/dev/null || true
-    log "fuzz: $h for $seconds s (log: $fuzz_work/logs/$h.log)"
-    TMPDIR=$fuzz_work/tmp /usr/bin/time -f '%U %S' -o "$fuzz_work/logs/$h.cpu" \
-      nice -n 10 "$bin" "${fuzz_limits[@]}" -max_total_time="$seconds" -fork=1 \
+    log "fuzz: $h for $seconds CPU s (log: $fuzz_work/logs/$h.log)"
+    rm -f "$fuzz_work/logs/$h.cpu-used"
+    TMPDIR=$fuzz_work/tmp /usr/bin/time -f '%U %S %e' -o "$fuzz_work/logs/$h.cpu" \
+      nice -n 10 "$bin" "${fuzz_limits[@]}" -max_total_time=$((4 * seconds)) -fork=1 \
         -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
-        -artifact_prefix="$fuzz_work/findings/$h-" "$corpus" >"$fuzz_work/logs/$h.log" 2>&1 || true
-    local cpu findings
-    cpu=$(awk '{printf "%.0f", $1 + $2}' "$fuzz_work/logs/$h.cpu")
+        -artifact_prefix="$fuzz_work/findings/$h-" "$corpus" >"$fuzz_work/logs/$h.log" 2>&1 &
+    local runner=$!
+    stop_at_cpu_seconds "$runner" "$seconds" "$fuzz_work/logs/$h.cpu-used"
+    wait "$runner" || true
+    local cpu wall findings
+    cpu=$(cat "$fuzz_work/logs/$h.cpu-used" 2>/dev/null || echo "under 10")
+    # The last line: the interrupted fuzzer's exit status comes before.
+    wall=$(tail -n 1 "$fuzz_work/logs/$h.cpu" | awk '{printf "%.0f", $3}')
     findings=$(find "$fuzz_work/findings" -name "$h-*" | wc -l)
-    log "fuzz: $h: ${cpu} CPU s, $(grep -o 'exec/s: [0-9]*' "$fuzz_work/logs/$h.log" | tail -n 1)," \
+    log "fuzz: $h: ${cpu} CPU s in ${wall} s of wall time, $(grep -o 'exec/s:\? [0-9]*' "$fuzz_work/logs/$h.log" | tail -n 1)," \
         "corpus $(find "$corpus" -type f | wc -l) inputs, findings so far: $findings"
   done
   log "findings (if any) are in $fuzz_work/findings; reproduce one with $fuzz_build/fuzz/relgeo_fuzz_NAME FILE"
+}
+
+# The pids of process $1 and of all its descendants.
+process_tree() {
+  local child
+  echo "$1"
+  for child in $(pgrep -P "$1"); do process_tree "$child"; done
+}
+
+# Interrupts the fuzzer run by /usr/bin/time (pid $1) once it and its jobs
+# have used $2 CPU seconds, and writes the CPU seconds used to file $3: summed
+# over the fuzzer's process tree, each process's utime + stime + cutime +
+# cstime (/proc/PID/stat fields 14-17; a reaped job's time is in its parent's
+# cutime, a live one's in its own). This is the campaign's figure:
+# /usr/bin/time misses the last job, which the fuzzer does not reap when
+# interrupted.
+stop_at_cpu_seconds() {
+  local timer=$1 budget=$2 out=$3 ticks fuzzer used=0 tree
+  ticks=$(getconf CLK_TCK)
+  while kill -0 "$timer" 2>/dev/null; do
+    sleep 10
+    fuzzer=$(pgrep -P "$timer" | head -n 1) || continue
+    tree=$(process_tree "$fuzzer")
+    used=$(for p in $tree; do cat "/proc/$p/stat" 2>/dev/null || true; done |
+             awk '{sub(/^.*\) /, ""); t += $12 + $13 + $14 + $15} END {printf "%d", t}')
+    echo $((used / ticks)) >"$out"
+    if ((used >= budget * ticks)); then
+      # SIGTERM: libFuzzer's fork mode waits for its jobs in system(), which
+      # ignores SIGINT.
+      kill -TERM $tree 2>/dev/null || true
+      break
+    fi
+  done
 }
 
 run_tests() {

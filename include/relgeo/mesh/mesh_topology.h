@@ -249,11 +249,19 @@ inline Mesh_topology Mesh_topology::build_checked(std::size_t nv, std::span<cons
       for (Index v : faces[f]) ++t.out_begin_[v + 1];
   for (std::size_t v = 0; v < nv; ++v) t.out_begin_[v + 1] += t.out_begin_[v];
   t.out_.resize(t.out_begin_[nv]);
+  // The targets of the outgoing half-edges, stored beside them: the search
+  // for opposites below then reads two short contiguous runs per half-edge
+  // instead of a face per candidate.
+  std::vector<Index> out_target(t.out_.size());
   {
     std::vector<Index> fill(t.out_begin_.begin(), t.out_begin_.end() - 1);
     for (Index f = 0; f < nf; ++f)
       if (face_ok[f])
-        for (Index i = 0; i < 3; ++i) t.out_[fill[faces[f][i]]++] = 3 * f + i;
+        for (Index i = 0; i < 3; ++i) {
+          const Index slot = fill[faces[f][i]]++;
+          t.out_[slot] = 3 * f + i;
+          out_target[slot] = faces[f][i == 2 ? 0 : i + 1];
+        }
   }
   // Opposites: the unique half-edge b->a for a->b, when the edge is manifold.
   t.opposite_.assign(nh, invalid_index);
@@ -262,9 +270,9 @@ inline Mesh_topology Mesh_topology::build_checked(std::size_t nv, std::span<cons
     if (!face_ok[h / 3]) continue;
     const Index a = t.source(h), b = t.target(h);
     Index same = 0, opp = 0, match = invalid_index;
-    for (Index k = t.out_begin_[a]; k < t.out_begin_[a + 1]; ++k) same += t.target(t.out_[k]) == b;
+    for (Index k = t.out_begin_[a]; k < t.out_begin_[a + 1]; ++k) same += out_target[k] == b;
     for (Index k = t.out_begin_[b]; k < t.out_begin_[b + 1]; ++k)
-      if (t.target(t.out_[k]) == a) ++opp, match = t.out_[k];
+      if (out_target[k] == a) ++opp, match = t.out_[k];
     if (same + opp > 2) bad_edges.push_back(Edge::of(a, b));
     else if (same == 2) misoriented.push_back(Edge::of(a, b));
     else if (opp == 1) t.opposite_[h] = match;

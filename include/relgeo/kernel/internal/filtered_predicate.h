@@ -116,6 +116,8 @@ class Expansion_scaling {
   }
   /// Whether the expansions are exact on these inputs.
   bool exact() const { return exact_; }
+  /// The scaling's exponent: inputs are multiplied by 2^shift().
+  int shift() const { return shift_; }
   /// v scaled (exact: the scaled value's bits lie in the range above).
   Dynamic_expansion operator()(double v) const { return Dynamic_expansion(std::ldexp(v, shift_)); }
 

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <span>
 #include <type_traits>
@@ -33,16 +34,33 @@
 
 namespace relgeo::internal {
 
+/// An Interval containing an expansion's value (for approximate_from_enclosure).
+inline Interval enclosure_interval(const Dynamic_expansion& e) {
+  Interval sum(0.0);
+  for (const double c : e) sum = sum + Interval(c);
+  return sum;
+}
+
 /// Number of defining points of each kind.
 constexpr int defining_point_count(Implicit_point_kind kind) {
   return kind == Implicit_point_kind::explicit_point ? 1 : (kind == Implicit_point_kind::lpi ? 5 : 9);
 }
 
 /// An implicit point of double inputs with its first-stage coordinates.
+/// 88 bytes: an explicit point (most points of a mesh) is its filter, whose
+/// values are its coordinates exactly; the 5 or 9 defining points of an LPI
+/// or TPI point are stored once, shared by the copies.
 struct Staged_implicit_point {
   Homogeneous_3<Filtered_value<double>> filter;
   Implicit_point_kind kind = Implicit_point_kind::explicit_point;
-  std::array<Point_3<double>, 9> primitives;  ///< the first defining_point_count(kind) are set
+  std::shared_ptr<const std::array<Point_3<double>, 9>> defining;  ///< null for an explicit point
+
+  /// The i-th defining point, i < defining_point_count(kind) (the point
+  /// itself when explicit).
+  Point_3<double> primitive(int i) const {
+    if (kind == Implicit_point_kind::explicit_point) return {filter.x.value, filter.y.value, filter.z.value};
+    return (*defining)[i];
+  }
 };
 
 /// Degree in the input coordinates of a point's homogeneous coordinates
@@ -56,7 +74,7 @@ constexpr int homogeneous_degree(Implicit_point_kind kind) {
 template <class NT, class Convert>
 Homogeneous_3<NT> homogeneous_coordinates(const Staged_implicit_point& p, const Convert& to_nt) {
   const auto point = [&](int i) {
-    const Point_3<double>& v = p.primitives[i];
+    const Point_3<double> v = p.primitive(i);
     return Point_3<NT>{to_nt(v.x), to_nt(v.y), to_nt(v.z)};
   };
   switch (p.kind) {
@@ -81,8 +99,10 @@ class Defining_doubles {
     for (const auto* p : points) {
       degree_ += homogeneous_degree(p->kind);
       has_tpi_ = has_tpi_ || p->kind == Implicit_point_kind::tpi;
-      for (int i = 0; i < defining_point_count(p->kind); ++i)
-        for (double v : {p->primitives[i].x, p->primitives[i].y, p->primitives[i].z}) values_[count_++] = v;
+      for (int i = 0; i < defining_point_count(p->kind); ++i) {
+        const Point_3<double> d = p->primitive(i);
+        for (double v : {d.x, d.y, d.z}) values_[count_++] = v;
+      }
     }
   }
   std::span<const double> values() const { return {values_.data(), count_}; }
@@ -141,7 +161,6 @@ struct Staged_implicit_policy {
 
   static Point make(const Explicit& p) {
     Point r;
-    r.primitives[0] = p;
     r.filter = explicit_coordinates(Point_3<Filtered_value<double>>{p.x, p.y, p.z});
     return r;
   }
@@ -179,7 +198,7 @@ struct Staged_implicit_policy {
   /// The exact rational coordinates (GMP; the filters are not used).
   static std::array<mpq_class, 3> exact_coordinates(const Point& a) {
     if (a.kind == Implicit_point_kind::explicit_point)
-      return {exact_rational(a.primitives[0].x), exact_rational(a.primitives[0].y), exact_rational(a.primitives[0].z)};
+      return {exact_rational(a.filter.x.value), exact_rational(a.filter.y.value), exact_rational(a.filter.z.value)};
     const Scaled_integers to_integer(Defining_doubles<1>(std::array<const Point*, 1>{&a}).values());
     const Homogeneous_3<mpz_class> h = homogeneous_coordinates<mpz_class>(a, to_integer);
     std::array<mpq_class, 3> c;
@@ -193,10 +212,12 @@ struct Staged_implicit_policy {
 
   /// Doubles within a few ulps: from the filter when its enclosure is within
   /// 4 ulps of its midpoint, else from intervals recomputed from the defining
-  /// doubles, else the exact coordinates rounded once (at most half an ulp).
+  /// doubles, else from exact expansions of the homogeneous coordinates (when
+  /// the generic predicates would use them), else the exact coordinates
+  /// rounded once (at most half an ulp).
   static Approximate_point_3 approximate(const Point& a) {
     return in_default_fp_environment([&] {
-      if (a.kind == Implicit_point_kind::explicit_point) return Approximate_point_3{a.primitives[0], 0.0};
+      if (a.kind == Implicit_point_kind::explicit_point) return Approximate_point_3{a.primitive(0), 0.0};
       const auto close = [](const Approximate_point_3& x) {
         const double scale = std::max({std::abs(x.point.x), std::abs(x.point.y), std::abs(x.point.z)});
         return x.error <= 0x1p-50 * scale;
@@ -206,6 +227,7 @@ struct Staged_implicit_policy {
       const Approximate_point_3 interval = approximate_from_enclosure(
           homogeneous_coordinates<Interval>(a, [](double v) { return Interval(v); }));
       if (close(interval)) return interval;
+      if (const Approximate_point_3 e = approximate_by_expansions(a); close(e)) return e;
       const std::array<mpq_class, 3> c = exact_coordinates(a);
       Approximate_point_3 r;
       double error = 0;
@@ -220,14 +242,33 @@ struct Staged_implicit_policy {
   }
 
  private:
+  // X, Y, Z, W exact in expansions, each enclosed by the outward-rounded sum
+  // of its components (a few ulps wide), divided in intervals. The inputs
+  // were scaled by 2^shift, and so was X / W: the scaling is undone when
+  // that is exact, else the answer is "not close" (GMP decides).
+  static Approximate_point_3 approximate_by_expansions(const Point& a) {
+    const Defining_doubles<1> inputs(std::array<const Point*, 1>{&a});
+    if (!inputs.expansions_worthwhile()) return {};
+    const Expansion_scaling scaled(inputs.values(), inputs.degree());
+    if (!scaled.exact()) return {};
+    Approximate_point_3 r = approximate_from_enclosure(homogeneous_coordinates<Dynamic_expansion>(a, scaled));
+    double* coordinate[4] = {&r.point.x, &r.point.y, &r.point.z, &r.error};
+    for (double* c : coordinate) {
+      const double unscaled = std::ldexp(*c, -scaled.shift());
+      if (std::ldexp(unscaled, scaled.shift()) != *c) return {};
+      *c = unscaled;
+    }
+    return r;
+  }
   template <std::size_t N>
   static std::optional<Point> built(Implicit_point_kind kind, const std::array<Explicit, N>& v) {
+    for (std::size_t i = 0; i < N; ++i)
+      if (!all_finite(v[i].x, v[i].y, v[i].z)) return std::nullopt;
     Point r;
     r.kind = kind;
-    for (std::size_t i = 0; i < N; ++i) {
-      if (!all_finite(v[i].x, v[i].y, v[i].z)) return std::nullopt;
-      r.primitives[i] = v[i];
-    }
+    auto defining = std::make_shared<std::array<Point_3<double>, 9>>();
+    std::copy(v.begin(), v.end(), defining->begin());
+    r.defining = std::move(defining);
     // W must be nonzero: decided on the error-bounded W when it can be,
     // through the later stages otherwise.
     const Certified_sign w = in_default_fp_environment([&] {

@@ -9,7 +9,7 @@
 
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/floating_point.h"
-#include "relgeo/kernel/internal/determinants.h"
+#include "relgeo/kernel/internal/exact_dyadic.h"
 #include "relgeo/kernel/internal/filtered_predicate.h"
 #include "relgeo/kernel/internal/expansion_orientation.h"
 #include "relgeo/kernel/internal/expansion_orientation_3.h"
@@ -116,10 +116,7 @@ class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel
     if (const auto e = internal::expansion_orientation_2(p.x, p.y, q.x, q.y, r.x, r.y))
       return {*e, Filter_stage::expansion};
     const std::array<double, 6> c{p.x, p.y, q.x, q.y, r.x, r.y};
-    return internal::filtered_exact_sign(c, 2, true, [&c](const auto& to) {
-      return internal::certified_sign_of(
-          internal::orientation_2_determinant(to(c[0]), to(c[1]), to(c[2]), to(c[3]), to(c[4]), to(c[5])));
-    });
+    return internal::filtered_exact_sign(c, 2, true, internal::orientation_2_formula(c));
   }
   [[gnu::noinline]] static std::pair<Certified_sign, Filter_stage> after_semi_static_3(
       const Point_3& p, const Point_3& q, const Point_3& r, const Point_3& s) {
@@ -132,11 +129,7 @@ class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel
     // As in 2D: in its range the expansion always decides, faster than
     // intervals (which decide 31% of near-coplanar input) and GMP.
     if (const auto e = internal::expansion_orientation_3(c)) return {*e, Filter_stage::expansion};
-    return internal::filtered_exact_sign(c, 3, true, [&c](const auto& to) {
-      return internal::certified_sign_of(internal::orientation_3_determinant(
-          to(c[0]), to(c[1]), to(c[2]), to(c[3]), to(c[4]), to(c[5]), to(c[6]), to(c[7]), to(c[8]), to(c[9]),
-          to(c[10]), to(c[11])));
-    });
+    return internal::filtered_exact_sign(c, 3, true, internal::orientation_3_formula(c));
   }
 };
 

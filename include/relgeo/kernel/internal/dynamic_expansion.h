@@ -48,11 +48,6 @@ class Dynamic_expansion {
     return c_.empty() ? Certified_sign::zero : (c_.back() > 0 ? Certified_sign::positive : Certified_sign::negative);
   }
 
-  Dynamic_expansion operator-() const {
-    Dynamic_expansion r = *this;
-    for (double& x : r.c_) x = -x;
-    return r;
-  }
   // Every result is compressed: the operands of the next product are short.
   friend Dynamic_expansion operator+(const Dynamic_expansion& e, const Dynamic_expansion& f) { return sum(e, f, 1.0); }
   friend Dynamic_expansion operator-(const Dynamic_expansion& e, const Dynamic_expansion& f) { return sum(e, f, -1.0); }
@@ -62,22 +57,12 @@ class Dynamic_expansion {
     const Dynamic_expansion& longer = e.size() >= f.size() ? e : f;
     const Dynamic_expansion& shorter = e.size() >= f.size() ? f : e;
     Dynamic_expansion product;
-    if (shorter.size() == 0) return product;
-    const std::size_t n = longer.size();
-    product.c_.resize(2 * n * shorter.size(), boost::container::default_init);
-    std::size_t k = expansion::scale(longer.data(), n, shorter.c_[0], product.c_.data());
-    if (shorter.size() > 1) {
-      // Partial sums alternate between product and spare; scaled is the next term.
-      Storage scaled(2 * n, boost::container::default_init), spare(product.c_.size(), boost::container::default_init);
-      double* into = spare.data();
-      double* from = product.c_.data();
-      for (std::size_t i = 1; i < shorter.size(); ++i) {
-        const std::size_t s = expansion::scale(longer.data(), n, shorter.c_[i], scaled.data());
-        k = expansion::sum(from, k, scaled.data(), s, into);
-        std::swap(into, from);
-      }
-      if (from != product.c_.data()) product.c_.swap(spare);
-    }
+    const std::size_t n = longer.size(), m = shorter.size();
+    if (m == 0) return product;
+    product.c_.resize(2 * n * m, boost::container::default_init);
+    Storage scaled(2 * n, boost::container::default_init), spare(m > 1 ? 2 * n * m : 0, boost::container::default_init);
+    const std::size_t k = expansion::product(longer.data(), n, shorter.data(), m, product.c_.data(), scaled.data(),
+                                             spare.data());
     product.c_.resize(expansion::compress(product.c_.data(), k, product.c_.data()));
     return product;
   }

@@ -116,6 +116,25 @@ inline std::size_t scale(const double* e, std::size_t n, double b, double* h) {
   return k;
 }
 
+/// h = e * f (n and m components), the sum of e scaled by each component of
+/// f. Work space: `scaled` for 2n and, when m > 1, `spare` for 2nm doubles;
+/// h has room for 2nm.
+inline std::size_t product(const double* e, std::size_t n, const double* f, std::size_t m, double* h,
+                           double* scaled, double* spare) {
+  if (m == 1) return scale(e, n, f[0], h);
+  // The partial sums alternate between h and spare, starting so that the
+  // last lands in h.
+  double* into = m % 2 ? h : spare;
+  double* from = m % 2 ? spare : h;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t s = scale(e, n, f[i], scaled);
+    k = sum(from, k, scaled, s, into);
+    std::swap(into, from);
+  }
+  return k;
+}
+
 /// h = e with every component negated.
 inline std::size_t negate(const double* e, std::size_t n, double* h) {
   for (std::size_t i = 0; i < n; ++i) h[i] = -e[i];
@@ -259,18 +278,9 @@ Expansion<2 * A> operator*(const Expansion<A>& e, double b) {
 template <std::size_t A, std::size_t B>
 Expansion<2 * A * B> operator*(const Expansion<A>& e, const Expansion<B>& f) {
   return Expansion<2 * A * B>::computed([&](double* h) {
-    // The partial sums alternate between h and spare; the last is in h.
     std::array<double, 2 * A> scaled;
     std::array<double, 2 * A * B> spare;
-    double* into = f.size() % 2 ? h : spare.data();
-    double* from = f.size() % 2 ? spare.data() : h;
-    std::size_t n = 0;
-    for (const double b : f) {
-      const std::size_t k = expansion::scale(e.begin(), e.size(), b, scaled.data());
-      n = expansion::sum(from, n, scaled.data(), k, into);
-      std::swap(into, from);
-    }
-    return n;
+    return expansion::product(e.begin(), e.size(), f.begin(), f.size(), h, scaled.data(), spare.data());
   });
 }
 

@@ -99,12 +99,14 @@ const std::pair<Mesh, Mesh>& operands(const std::string& name) {
 namespace {
 
 template <class K>
-std::function<Run_outcome()> relgeo_run(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op, bool checks) {
-  return [&a, &b, op, checks] {
+std::function<Run_outcome()> relgeo_run(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op, bool checks,
+                                        int threads = 1) {
+  return [&a, &b, op, checks, threads] {
     // The output's validation report is off: CGAL's corefinement has none
     // (its cost is Boolean_timing::validation, reported by `relgeo boolean`).
     const auto r = relgeo::boolean(a, b, op, K{},
-                                   {.check_operands = checks, .check_self_intersections = checks, .validate_output = false});
+                                   {.check_operands = checks, .check_self_intersections = checks, .validate_output = false,
+                                    .threads = threads});
     return Run_outcome{r.mesh.faces.size(), r.ok() && closed_oriented_manifold(r.mesh), volume(r.mesh)};
   };
 }
@@ -117,6 +119,13 @@ std::vector<Subject> subjects() {
       {"relgeo filtered, no operand check", [](const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
          return relgeo_run<relgeo::Filtered_exact_kernel>(a, b, op, false);
        }, false, "CGAL::corefine Epick"},
+#if defined(RELGEO_HAS_TBB) && RELGEO_HAS_TBB
+      // The operand checks and the broad phase on 2 threads (TBB); the rest
+      // of the Boolean is serial.
+      {"relgeo filtered, 2 threads", [](const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
+         return relgeo_run<relgeo::Filtered_exact_kernel>(a, b, op, true, 2);
+       }, false, "CGAL::corefine Epick"},
+#endif
       {"relgeo exact", [](const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
          return relgeo_run<relgeo::Exact_kernel>(a, b, op, true);
        }, true, "CGAL::corefine Epeck"},

@@ -5,8 +5,10 @@
 // crash or hang. Bad operands are refused with the defect named.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <string>
 
 #include "boolean_inputs.h"
@@ -127,6 +129,17 @@ TYPED_TEST(MeshBoolean, SpheresAndTorusInGeneralPosition) {
       }
       EXPECT_GT(r.counts.new_vertices, 0u);
       EXPECT_FALSE(r.mesh.tags.creases().empty()) << "the intersection curves are creases";
+      if (kOps[i] == Op::union_of || kOps[i] == Op::intersection) {
+        // Each new vertex counted once, however many face pairs reached it:
+        // in a union or an intersection every one ends a crease.
+        std::set<Index> new_on_creases;
+        for (const Edge& e : r.mesh.tags.creases())
+          for (const Index v : {e.a, e.b})
+            if (r.vertex_locations[v][0].kind != Surface_location::Kind::vertex &&
+                r.vertex_locations[v][1].kind != Surface_location::Kind::vertex)
+              new_on_creases.insert(v);
+        EXPECT_EQ(new_on_creases.size(), r.counts.new_vertices) << name << " " << to_string(kOps[i]);
+      }
     }
     if (!all_ok) continue;
     const double scale = volume(a) + volume(b);
@@ -154,6 +167,35 @@ TEST(MeshBooleanExact, TheDoublePointHookGivesTheReferenceResult) {
       for (std::size_t i = 0; i < own.exact_vertices.size(); ++i)
         EXPECT_EQ(hook.exact_vertices[i].point, own.exact_vertices[i].point) << to_string(op) << " vertex " << i;
     }
+}
+
+// The checks and the broad phase run on several threads when TBB is there
+// (this test's target links it): the same result, face for face; and a
+// self-intersecting operand found by the parallel test is refused alike.
+TEST(MeshBooleanThreads, TheResultDoesNotDependOnTheThreadCount) {
+  const Mesh a = icosphere(4), b = icosphere(4, {0.4, 0.3, 0.2}, 0.9);
+  for (Op op : kOps) {
+    const auto serial = boolean(a, b, op);
+    const auto parallel = boolean(a, b, op, Filtered_exact_kernel{}, Boolean_options{.threads = 2});
+    ASSERT_TRUE(serial.ok() && parallel.ok()) << to_string(op);
+    EXPECT_EQ(serial.mesh.faces, parallel.mesh.faces) << to_string(op);
+    EXPECT_EQ(serial.mesh.vertices.size(), parallel.mesh.vertices.size()) << to_string(op);
+    EXPECT_TRUE(std::ranges::equal(serial.mesh.tags.creases(), parallel.mesh.tags.creases())) << to_string(op);
+    EXPECT_EQ(serial.counts.candidate_pairs, parallel.counts.candidate_pairs) << to_string(op);
+  }
+  Mesh crossing = a;
+  const auto v0 = crossing.vertices[0];
+  crossing.vertices[0] = {-1.5 * v0.x, -1.5 * v0.y, -1.5 * v0.z};  // pulled through the far side
+  for (int threads : {1, 2}) {
+    try {
+      (void)boolean(crossing, b, Op::union_of, Filtered_exact_kernel{}, Boolean_options{.threads = threads});
+      ADD_FAILURE() << "a self-intersecting operand was accepted on " << threads << " threads";
+    } catch (const Invalid_operand& e) {
+      EXPECT_EQ(e.operand(), "A");
+      EXPECT_TRUE(std::any_of(e.issues().begin(), e.issues().end(),
+                              [](const Mesh_issue& i) { return i.defect == Mesh_defect::self_intersection; }));
+    }
+  }
 }
 
 TEST(MeshBooleanOperands, BadOperandsAreRefusedWithTheDefect) {

@@ -59,6 +59,10 @@ struct Boolean_options {
   /// Options of that validation (the exact volume string is off by default:
   /// it can be long).
   Solid_validation_options validation{.exact_volume_string = false};
+  /// Threads for the operand checks and the broad phase (1: serial; 0: every
+  /// hardware thread; more than one only when built with TBB: RELGEO_HAS_TBB,
+  /// see mesh/internal/parallel.h). The result does not depend on it.
+  int threads = 1;
 };
 
 /// An operand is not a valid solid boundary: which one ("A" or "B") and

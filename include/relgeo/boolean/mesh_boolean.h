@@ -66,14 +66,14 @@ class Boolean_engine {
     Result r;
     Stopwatch clock;
     if (options_.check_operands) {
-      check_operand(*mesh_[0], "A");
-      check_operand(*mesh_[1], "B");
+      check_operand(0, "A");
+      check_operand(1, "B");
     }
     r.time.check = clock.lap();
     load_points();
-    std::vector<std::pair<Index, Index>> pairs;
-    Face_bvh(*mesh_[0]).for_each_overlapping_pair(Face_bvh(*mesh_[1]),
-                                                  [&](Index fa, Index fb) { pairs.emplace_back(fa, fb); });
+    for (int m = 0; m < 2; ++m)
+      if (!bvh_[m]) bvh_[m].emplace(*mesh_[m], Face_bvh_options{.threads = options_.threads});
+    const std::vector<Face_pair> pairs = bvh_[0]->overlapping_pairs(*bvh_[1], options_.threads);
     r.counts.candidate_pairs = pairs.size();
     r.time.broad_phase = clock.lap();
     if (!narrow_phase(pairs, r)) return finish_failed(r, clock, &Boolean_timing::narrow_phase);
@@ -111,10 +111,15 @@ class Boolean_engine {
   // whatever kernel the Boolean itself runs under.
   using Check_kernel = Filtered_exact_kernel;
 
-  void check_operand(const Mesh& m, const char* name) const {
+  // The checks build the operand's topology and (with the self-intersection
+  // test) its face hierarchy: the later phases reuse both.
+  void check_operand(int m, const char* name) {
     // check_solid adds the exact self-intersection test (Face_bvh pairs,
     // pairs sharing a vertex or an edge allowed exactly that) to check_mesh.
-    Mesh_report report = options_.check_self_intersections ? check_solid<Check_kernel>(m) : check_mesh<Check_kernel>(m);
+    topology_[m].emplace();
+    Mesh_report report = options_.check_self_intersections
+                             ? internal::check_solid<Check_kernel>(*mesh_[m], {}, *topology_[m], bvh_[m], options_.threads)
+                             : internal::check_mesh<Check_kernel>(*mesh_[m], {}, *topology_[m]);
     if (!report.is_valid()) throw Invalid_operand(name, std::move(report.issues));
   }
 
@@ -162,7 +167,7 @@ class Boolean_engine {
     Triangle_location where[2];
   };
 
-  bool narrow_phase(const std::vector<std::pair<Index, Index>>& pairs, Result& r) {
+  bool narrow_phase(const std::vector<Face_pair>& pairs, Result& r) {
     for (const auto& [fa, fb] : pairs) {
       const auto x = intersect_triangles(triangle(*mesh_[0], fa), triangle(*mesh_[1], fb), k_);
       if (x.kind == Triangle_intersection_kind::undecided) {
@@ -194,7 +199,8 @@ class Boolean_engine {
       return false;
     }
     merge_equal_points();
-    r.counts.new_vertices = points_.size() - offset_[1] - mesh_[1]->vertices.size();
+    for (Index p = offset_[1] + static_cast<Index>(mesh_[1]->vertices.size()); p < points_.size(); ++p)
+      r.counts.new_vertices += find(p) == p;
     return true;
   }
 
@@ -208,6 +214,13 @@ class Boolean_engine {
         else unite(id, v);
       }
     if (id == invalid_index) {
+      const std::optional<Cell_pair> cells = meeting_cells(fa, fb, where);
+      if (cells) {
+        const auto [it, inserted] = point_of_cells_.try_emplace(*cells, static_cast<Index>(points_.size()));
+        if (!inserted) id = it->second;
+      }
+    }
+    if (id == invalid_index) {
       id = static_cast<Index>(points_.size());
       points_.push_back(p);
       parent_.push_back(id);
@@ -216,11 +229,46 @@ class Boolean_engine {
     return id;
   }
 
-  // Equal points reached from different pairs (or as different
-  // constructions) become one: sorted by the exact lexicographic order.
+  // A new point is where an open edge of one operand meets an open edge or
+  // the open interior of a face of the other. Such two cells meet in one
+  // point at most (an edge lying in the other's plane ends on its edges or
+  // at vertices, never inside), so every pair of faces around the same two
+  // cells gives the same point: one vertex without arithmetic. The cells of
+  // operand m are keyed by (face, invalid_index) for an interior and by the
+  // sorted vertices of an edge; two interiors are no such pair (nullopt).
+  using Cell_pair = std::array<Index, 4>;
+  struct Cell_pair_hash {
+    std::size_t operator()(const Cell_pair& c) const {
+      std::uint64_t h = 0x9e3779b97f4a7c15ull;
+      for (Index x : c) h = (h ^ x) * 0xff51afd7ed558ccdull;
+      return static_cast<std::size_t>(h ^ (h >> 32));
+    }
+  };
+  std::optional<Cell_pair> meeting_cells(Index fa, Index fb, const std::array<Triangle_location, 2>& where) const {
+    Cell_pair key{};
+    bool some_edge = false;
+    for (int m = 0; m < 2; ++m) {
+      const Index f = m == 0 ? fa : fb;
+      if (where[m].kind == Triangle_location::Kind::edge) {
+        const Triangle& t = mesh_[m]->faces[f];
+        const Index u = t[where[m].index], v = t[(where[m].index + 1) % 3];
+        key[2 * m] = std::min(u, v), key[2 * m + 1] = std::max(u, v);
+        some_edge = true;
+      } else {
+        key[2 * m] = f, key[2 * m + 1] = invalid_index;
+      }
+    }
+    if (!some_edge) return std::nullopt;
+    return key;
+  }
+
+  // Equal points that register_point did not recognise by their cells (an
+  // operand that crosses itself, when the checks are off) become one: sorted
+  // by the exact lexicographic order. After the cells, the points compared
+  // are distinct, which the kernels' filters decide without exact arithmetic.
   void merge_equal_points() {
     std::vector<Index> ids;
-    for (const auto& l : located_) ids.push_back(l.point);
+    for (const auto& l : located_) ids.push_back(find(l.point));
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     const auto compare = k_.compare_xyz_3_object();
@@ -239,13 +287,15 @@ class Boolean_engine {
   bool retriangulate(Result& r) {
     // What lies on each face and on each edge of each operand: flat arrays
     // indexed by the operands' own topology (face -> slot of the faces met).
-    std::array<Mesh_topology, 2> topology{Mesh_topology::build(*mesh_[0]), Mesh_topology::build(*mesh_[1])};
+    for (int m = 0; m < 2; ++m)
+      if (!topology_[m]) topology_[m] = Mesh_topology::build(*mesh_[m]);  // operands not checked
+    const std::array<const Mesh_topology*, 2> topology{&*topology_[0], &*topology_[1]};
     std::array<std::vector<Index>, 2> slot{std::vector<Index>(mesh_[0]->faces.size(), invalid_index),
                                            std::vector<Index>(mesh_[1]->faces.size(), invalid_index)};
     std::array<std::vector<Face_constraints>, 2> faces;
     std::array<std::vector<std::vector<Index>>, 2> edge_points{
-        std::vector<std::vector<Index>>(topology[0].number_of_edges()),
-        std::vector<std::vector<Index>>(topology[1].number_of_edges())};
+        std::vector<std::vector<Index>>(topology[0]->number_of_edges()),
+        std::vector<std::vector<Index>>(topology[1]->number_of_edges())};
     const auto constraints = [&](int m, Index f) -> Face_constraints& {
       if (slot[m][f] == invalid_index) {
         slot[m][f] = static_cast<Index>(faces[m].size());
@@ -259,7 +309,7 @@ class Boolean_engine {
         if (l.where[m].kind == Triangle_location::Kind::vertex) continue;
         Face_constraints& c = constraints(m, l.face[m]);
         if (l.where[m].kind == Triangle_location::Kind::edge) {
-          const Index e = topology[m].edge(3 * l.face[m] + l.where[m].index);
+          const Index e = topology[m]->edge(3 * l.face[m] + l.where[m].index);
           edge_points[m][e].push_back(id);
         } else {
           c.interior_points.push_back(id);
@@ -282,7 +332,7 @@ class Boolean_engine {
         const std::array<Index, 3> corners{find(offset_[m] + t[0]), find(offset_[m] + t[1]), find(offset_[m] + t[2])};
         // A face is split when it meets the other operand or a point lies on one of its edges.
         bool split = slot[m][f] != invalid_index;
-        for (int e = 0; e < 3 && !split; ++e) split = !edge_points[m][topology[m].edge(3 * f + e)].empty();
+        for (int e = 0; e < 3 && !split; ++e) split = !edge_points[m][topology[m]->edge(3 * f + e)].empty();
         if (!split) {
           pieces_[m].triangles.push_back(corners);
           pieces_[m].input_face.push_back(f);
@@ -297,7 +347,7 @@ class Boolean_engine {
         };
         c.corners = corners;
         for (int e = 0; e < 3; ++e) {
-          c.edge_points[e] = edge_points[m][topology[m].edge(3 * f + e)];
+          c.edge_points[e] = edge_points[m][topology[m]->edge(3 * f + e)];
           not_corner(c.edge_points[e]);
         }
         not_corner(c.interior_points);
@@ -528,6 +578,11 @@ class Boolean_engine {
       }
       return n;
     };
+    // The curves that are edges of the output are its creases (looked up
+    // only for output edges between two curve points).
+    std::vector<char> on_curve(points_.size(), 0);
+    for (const Edge& e : curves_.edges()) on_curve[e.a] = on_curve[e.b] = 1;
+    std::vector<Edge> creases;
     for (int m = 0; m < 2; ++m)
       for (Index t = 0; t < pieces_[m].triangles.size(); ++t) {
         bool flip = false;
@@ -536,19 +591,13 @@ class Boolean_engine {
         if (flip) std::swap(tri[1], tri[2]);
         r.mesh.faces.push_back({use(tri[0]), use(tri[1]), use(tri[2])});
         r.provenance.push_back({static_cast<std::uint8_t>(m), pieces_[m].input_face[t]});
+        for (int k = 0; k < 3; ++k) {
+          const Index u = tri[k], w = tri[(k + 1) % 3];
+          if (on_curve[u] && on_curve[w] && curves_.contains(u, w)) creases.push_back({new_index[u], new_index[w]});
+        }
       }
     locate_output_vertices(new_index, r);
-    // The curves that are edges of the output are its creases.
-    Edge_set output_edges;
-    for (const Triangle& f : r.mesh.faces)
-      for (int k = 0; k < 3; ++k) output_edges.insert(f[k], f[(k + 1) % 3]);
-    output_edges.finish();
-    std::vector<Edge> creases;
-    for (const Edge& e : curves_.edges())
-      if (new_index[e.a] != invalid_index && new_index[e.b] != invalid_index &&
-          output_edges.contains(new_index[e.a], new_index[e.b]))
-        creases.push_back(Edge::of(new_index[e.a], new_index[e.b]));
-    r.mesh.tags.set_creases(std::move(creases));
+    r.mesh.tags.set_creases(std::move(creases));  // sorted, each once
   }
 
   // Where each output vertex lies on A and on B: input vertices are at
@@ -581,6 +630,10 @@ class Boolean_engine {
   }
 
   std::array<const Mesh*, 2> mesh_;
+  // The operands' topology and face hierarchy, built once (by the checks
+  // when they run).
+  std::array<std::optional<Mesh_topology>, 2> topology_;
+  std::array<std::optional<Face_bvh>, 2> bvh_;
   Boolean_operation op_;
   const K& k_;
   Boolean_options options_;
@@ -588,6 +641,7 @@ class Boolean_engine {
   std::vector<IP> points_;
   std::vector<Index> parent_;
   std::vector<Located_point> located_;
+  std::unordered_map<Cell_pair, Index, Cell_pair_hash> point_of_cells_;
   std::vector<Segment> segments_;
   std::array<std::unordered_map<Index, std::vector<Index>>, 2> coplanar_;
   Edge_set curves_;

@@ -200,6 +200,40 @@ std::vector<std::pair<Index, Index>> self_intersections(const Triangle_mesh<P>& 
   return out;
 }
 
+namespace internal {
+
+/// check_solid under kernel K, leaving the mesh's topology in `t` and, when
+/// the self-intersection test ran, its face hierarchy in `bvh` (the mesh
+/// Boolean goes on with both); the test on `threads` threads
+/// (Self_intersection_options).
+template <class K, class P>
+Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& options, Mesh_topology& t,
+                        std::optional<Face_bvh>& bvh, int threads = 1) {
+  Mesh_report r = internal::check_mesh<K>(m, options, t);
+  const bool can = !r.has(Mesh_defect::index_out_of_range) && !r.has(Mesh_defect::repeated_vertex_in_face) &&
+                   r.is_manifold() && r.is_consistently_oriented() &&
+                   !r.has(Mesh_defect::non_finite_coordinate);
+  if (!can) return r;
+  using Kernel = typename Default_self_intersection_kernel<P>::type;
+  const Kernel k{};
+  bvh.emplace(m, Face_bvh_options{.threads = threads});
+  const internal::Kernel_points<Kernel, P> point(m.vertices, k);
+  Self_intersections found;
+  const std::vector<unsigned char> skip = internal::degenerate_face_flags(k, point, m.faces);
+  for (Index f = 0; f < skip.size(); ++f)
+    if (skip[f] == 2) found.undecided_faces.push_back(f);
+  internal::find_self_intersections(k, point, m.faces, skip, *bvh, threads, found);
+  if (!found.undecided.empty() || !found.undecided_faces.empty())
+    throw Error(Error_code::computation_failure,
+                "check_solid: the kernel left " + std::to_string(found.undecided.size()) + " pairs and " +
+                    std::to_string(found.undecided_faces.size()) + " faces undecided");
+  for (const auto& [f, g] : found.pairs) r.issues.push_back({Mesh_defect::self_intersection, {f, g}});
+  r.self_intersections_checked = true;
+  return r;
+}
+
+}  // namespace internal
+
 /// check_mesh plus the self-intersection test (run only when the mesh is
 /// manifold with finite coordinates; otherwise self_intersections_checked
 /// stays false). A valid report certifies a closed (when required), 2-manifold,
@@ -208,14 +242,10 @@ std::vector<std::pair<Index, Index>> self_intersections(const Triangle_mesh<P>& 
 /// topology in a structured report.
 template <class K = void, class P>
 Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& options = {}) {
-  Mesh_report r = check_mesh<K>(m, options);
-  const bool can = !r.has(Mesh_defect::index_out_of_range) && !r.has(Mesh_defect::repeated_vertex_in_face) &&
-                   r.is_manifold() && r.is_consistently_oriented() &&
-                   !r.has(Mesh_defect::non_finite_coordinate);
-  if (!can) return r;
-  for (const auto& [f, g] : self_intersections(m)) r.issues.push_back({Mesh_defect::self_intersection, {f, g}});
-  r.self_intersections_checked = true;
-  return r;
+  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_check_kernel<P>::type, K>;
+  Mesh_topology t;
+  std::optional<Face_bvh> bvh;
+  return internal::check_solid<Kernel>(m, options, t, bvh);
 }
 
 }  // namespace relgeo

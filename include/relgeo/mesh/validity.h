@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -84,15 +85,17 @@ namespace internal {
 /// Every check of check_mesh except the collinearity test (which needs a
 /// kernel): indices, repeated vertices, edges and vertices, boundary,
 /// isolated vertices, tags, non-finite coordinates. Never throws for bad
-/// input; O(V + F).
+/// input; O(V + F). The topology it builds (Mesh_topology::build_checked) is
+/// left in `t` for callers that go on working on the mesh.
 template <class P>
-Mesh_report combinatorial_mesh_report(const Triangle_mesh<P>& m, const Mesh_check_options& options) {
+Mesh_report combinatorial_mesh_report(const Triangle_mesh<P>& m, const Mesh_check_options& options,
+                                      Mesh_topology& t) {
   Mesh_report r;
   const std::size_t nv = m.vertices.size();
   for (Index v = 0; v < nv; ++v)
     if (!internal::point_is_finite(m.vertices[v]))
       r.issues.push_back({Mesh_defect::non_finite_coordinate, {v, invalid_index}});
-  const Mesh_topology t = Mesh_topology::build_checked(nv, m.faces, r.issues);
+  t = Mesh_topology::build_checked(nv, m.faces, r.issues);
   // An edge whose other side failed to pair (non-manifold / misoriented) is
   // already reported; report true boundary edges only (looked up in the
   // sorted reported edges: linear in the number of edges).
@@ -124,6 +127,42 @@ Mesh_report combinatorial_mesh_report(const Triangle_mesh<P>& m, const Mesh_chec
     if (v >= nv) r.issues.push_back({Mesh_defect::invalid_tag, {v, invalid_index}});
   return r;
 }
+template <class P>
+Mesh_report combinatorial_mesh_report(const Triangle_mesh<P>& m, const Mesh_check_options& options) {
+  Mesh_topology t;
+  return combinatorial_mesh_report(m, options, t);
+}
+
+/// check_mesh under kernel K, leaving the mesh's topology in `t`.
+template <class K, class P>
+Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& options, Mesh_topology& t) {
+  using A = internal::Point_access<P>;
+  Mesh_report r = internal::combinatorial_mesh_report(m, options, t);
+  const std::size_t nv = m.vertices.size();
+  if (options.check_collinear_faces) {
+    const K k{};
+    const auto collinear = k.coplanar_orientation_3_object();
+    for (Index f = 0; f < m.faces.size(); ++f) {
+      const Triangle& tr = m.faces[f];
+      if (tr[0] >= nv || tr[1] >= nv || tr[2] >= nv) continue;
+      if (tr[0] == tr[1] || tr[1] == tr[2] || tr[0] == tr[2]) continue;  // reported as repeated
+      const P& a = m.vertices[tr[0]];
+      const P& b = m.vertices[tr[1]];
+      const P& c = m.vertices[tr[2]];
+      if (!internal::point_is_finite(a) || !internal::point_is_finite(b) || !internal::point_is_finite(c))
+        continue;
+      using KP = typename K::Point_3;
+      const auto cv = [](const P& p) {
+        if constexpr (std::is_same_v<KP, P>) return p;
+        else return internal::Point_access<KP>::make(A::x(p), A::y(p), A::z(p));
+      };
+      const Certified_sign s = collinear(cv(a), cv(b), cv(c));
+      if (s == Certified_sign::zero) r.issues.push_back({Mesh_defect::collinear_face, {f, invalid_index}});
+      else if (s == Certified_sign::uncertain) r.issues.push_back({Mesh_defect::undecided, {f, invalid_index}});
+    }
+  }
+  return r;
+}
 
 }  // namespace internal
 
@@ -139,32 +178,8 @@ Mesh_report combinatorial_mesh_report(const Triangle_mesh<P>& m, const Mesh_chec
 template <class K = void, class P>
 Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& options = {}) {
   using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_check_kernel<P>::type, K>;
-  using A = internal::Point_access<P>;
-  Mesh_report r = internal::combinatorial_mesh_report(m, options);
-  const std::size_t nv = m.vertices.size();
-  if (options.check_collinear_faces) {
-    const Kernel k{};
-    const auto collinear = k.coplanar_orientation_3_object();
-    for (Index f = 0; f < m.faces.size(); ++f) {
-      const Triangle& tr = m.faces[f];
-      if (tr[0] >= nv || tr[1] >= nv || tr[2] >= nv) continue;
-      if (tr[0] == tr[1] || tr[1] == tr[2] || tr[0] == tr[2]) continue;  // reported as repeated
-      const P& a = m.vertices[tr[0]];
-      const P& b = m.vertices[tr[1]];
-      const P& c = m.vertices[tr[2]];
-      if (!internal::point_is_finite(a) || !internal::point_is_finite(b) || !internal::point_is_finite(c))
-        continue;
-      using KP = typename Kernel::Point_3;
-      const auto cv = [](const P& p) {
-        if constexpr (std::is_same_v<KP, P>) return p;
-        else return internal::Point_access<KP>::make(A::x(p), A::y(p), A::z(p));
-      };
-      const Certified_sign s = collinear(cv(a), cv(b), cv(c));
-      if (s == Certified_sign::zero) r.issues.push_back({Mesh_defect::collinear_face, {f, invalid_index}});
-      else if (s == Certified_sign::uncertain) r.issues.push_back({Mesh_defect::undecided, {f, invalid_index}});
-    }
-  }
-  return r;
+  Mesh_topology t;
+  return internal::check_mesh<Kernel>(m, options, t);
 }
 
 /// Throws Invalid_mesh with every issue of check_mesh (context names the

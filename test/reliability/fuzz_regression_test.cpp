@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/subdivision.h"
@@ -97,6 +98,66 @@ TEST(FuzzRegression, FilteredExactApproximationOfAnUncertainLpiIsTheExactPoint) 
     EXPECT_LE(std::abs(r.point.z - c.exact[2]), r.error);
     EXPECT_EQ(r.point.x, c.exact[0]);  // the exact point is a double here
   }
+}
+
+/// fuzz/loop_subdivision, fuzz/corpus/loop_subdivision/regression_limit_positions_pillow:
+/// two faces on the same three vertices with opposite orientations (a closed
+/// "pillow", each vertex of valence 2). refine and limit_mesh with levels > 0
+/// refused it (faces sharing two edges), but limit_positions, and so
+/// limit_mesh at level 0, returned positions under every kernel. All three
+/// must refuse it alike.
+TEST(FuzzRegression, LimitPositionsRefuseFacesSharingTwoEdges) {
+  Triangle_mesh<Point_3<double>> pillow;
+  pillow.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  pillow.faces = {{0, 1, 3}, {1, 0, 3}};
+  Loop_subdivider<Naive_kernel<double>> loop;
+  EXPECT_THROW((void)loop.refine(pillow, 1), Invalid_input);
+  EXPECT_THROW((void)loop.limit_positions(pillow), Invalid_input);
+  EXPECT_THROW((void)loop.limit_mesh(pillow, 0), Invalid_input);
+  EXPECT_THROW((void)loop.limit_mesh(pillow, 2), Invalid_input);
+}
+
+/// fuzz/triangle_intersection, fuzz/corpus/triangle_intersection/regression_off_plane_overflow:
+/// two coplanar triangles sharing the edge from 0 to a point with z = DBL_MAX.
+/// The coplanar path builds edge crossings as LPI points against a plane
+/// through a point moved off the common plane; the move (2z where z + 1 == z)
+/// overflowed to infinity, the point could not be built, and the certified
+/// kernels answered `undecided`. Now 2z is replaced by z / 2 where it would
+/// overflow, and they decide.
+TEST(FuzzRegression, CoplanarTrianglesAtTheLargestDoubleAreDecided) {
+  const std::array<std::array<double, 3>, 6> v{{{0x1.0004p-383, 0x1p-383, 0x1.fffffffffffffp+1023},
+                                                {0x0.000000000e2p-1022, 0, 0},
+                                                {0, 0, 0},
+                                                {0x0.001000042p-1022, 0, 0},
+                                                {0, 0, 0},
+                                                {0x1.0004p-383, 0x1p-383, 0x1.fffffffffffffp+1023}}};
+  const auto run = [&](const auto& k) {
+    const auto p = k.construct_point_3_object();
+    const auto at = [&](int i) { return p(v[i][0], v[i][1], v[i][2]); };
+    const auto r = intersect_triangles(std::array{at(0), at(1), at(2)}, std::array{at(3), at(4), at(5)}, k);
+    EXPECT_EQ(r.kind, Triangle_intersection_kind::coplanar_overlap) << to_string(r.kind);
+    EXPECT_TRUE(r.perturbations.empty());
+  };
+  run(Filtered_exact_kernel{});
+  run(Exact_kernel{});
+}
+
+/// fuzz/triangle_intersection, fuzz/corpus/triangle_intersection/regression_naive_polygon_overflow:
+/// nearly coplanar triangles under Naive_kernel<double>. Its inconsistent
+/// in-plane signs made the clipped polygon alternate sides and outgrow its
+/// fixed capacity (std::bad_alloc from boost's static_vector). A polygon
+/// that outgrows what two triangles' overlap can have is now `undecided`.
+TEST(FuzzRegression, NaiveKernelTriangleIntersectionDoesNotOverflowItsPolygon) {
+  const std::array<std::array<double, 3>, 6> v{{{-0x1.f000000000004p+3, -0x1.f000000000004p+3, -0x1.f000000000001p+3},
+                                                {-0x1.4803000000001p+11, -0x1.f000000000004p+3, -0x1.f000000000167p+3},
+                                                {0x1.7511540000001p+15, -0x1.f000000000004p+3, -0x1.effffffffe666p+3},
+                                                {0x1.97ffffffffffcp+2, -0x1.f000000000004p+3, -0x1.efffffffffffep+3},
+                                                {0x1.6ac0000000001p+7, -0x1.f000000000004p+3, -0x1.effffffffffe6p+3},
+                                                {-0x1.1344000000001p+8, -0x1.f000000000004p+3, -0x1.f000000000024p+3}}};
+  const Naive_kernel<double> k;
+  const auto p = k.construct_point_3_object();
+  const auto at = [&](int i) { return p(v[i][0], v[i][1], v[i][2]); };
+  EXPECT_NO_THROW((void)intersect_triangles(std::array{at(0), at(1), at(2)}, std::array{at(3), at(4), at(5)}, k));
 }
 
 }  // namespace

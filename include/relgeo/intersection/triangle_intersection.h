@@ -37,6 +37,7 @@
 
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/core/errors.h"
+#include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/implicit_point.h"
 #include "relgeo/mesh/internal/point_access.h"
 
@@ -423,24 +424,30 @@ class Triangle_intersector {
       sides.push_back(side(e0, e1, v.point, sigma, axis));
       if (!is_certain(sides.back())) return false;
     }
+    // Consistent signs add at most one vertex per clip (a convex polygon
+    // crosses a line twice at most); a naive kernel's may alternate and
+    // overflow the polygon: undecided then, as for an uncertain sign.
+    const auto add = [&out](Polygon_vertex v) {
+      if (out.size() == out.capacity()) return false;
+      out.push_back(std::move(v));
+      return true;
+    };
     for (std::size_t i = 0; i < n; ++i) {
       const std::size_t prev = (i + n - 1) % n;
       const Certified_sign su = sides[prev], sv = sides[i];
       const Polygon_vertex& u = poly[prev];
       if (sv == Certified_sign::positive && su == Certified_sign::negative) {
         auto x = crossing(u.support, edge, a, b, axis);
-        if (!x) return false;
-        out.push_back({*x, u.support});
+        if (!x || !add({*x, u.support})) return false;
       }
       if (sv != Certified_sign::negative) {
         // A vertex on the line followed by an outside one: its edge now runs along a's edge.
         const bool leaves = sv == Certified_sign::zero && sides[(i + 1) % n] == Certified_sign::negative;
-        out.push_back({poly[i].point, leaves ? edge : poly[i].support});
+        if (!add({poly[i].point, leaves ? edge : poly[i].support})) return false;
       }
       if (sv == Certified_sign::negative && su == Certified_sign::positive) {
         auto x = crossing(u.support, edge, a, b, axis);
-        if (!x) return false;
-        out.push_back({*x, edge});  // the polygon now runs along a's edge
+        if (!x || !add({*x, edge})) return false;  // the polygon now runs along a's edge
       }
     }
     poly = std::move(out);
@@ -464,16 +471,23 @@ class Triangle_intersector {
   }
 
   // e0 moved along `axis`: off the common plane, whose normal has a nonzero
-  // component along the projection axis.
+  // component along the projection axis. Any move will do: by 1, or, where
+  // a floating-point type absorbs that (|c| >= 2^53), to 2c, or c / 2 where
+  // 2c would overflow.
   static P off_plane(const P& e0, int axis) {
     using A = internal::Point_access<P>;
     using FT = typename A::FT;
     FT c[3] = {A::x(e0), A::y(e0), A::z(e0)};
     const FT moved = FT(c[axis] + FT(1));
-    bool absorbed = false;  // |c| >= 2^53 in a floating-point type
+    bool absorbed = false;
     if constexpr (requires { K::compare_ft(moved, c[axis]); })
       absorbed = K::compare_ft(moved, c[axis]) == Certified_sign::zero;
-    c[axis] = absorbed ? FT(c[axis] * FT(2)) : moved;
+    if (absorbed) {
+      const FT doubled = FT(c[axis] * FT(2));
+      c[axis] = is_finite_number(doubled) ? doubled : FT(c[axis] / FT(2));
+    } else {
+      c[axis] = moved;
+    }
     return A::make(c[0], c[1], c[2]);
   }
 
@@ -489,6 +503,10 @@ class Triangle_intersector {
     }
     if (pts.empty()) {
       r.kind = Triangle_intersection_kind::disjoint;
+      return;
+    }
+    if (pts.size() > r.points.capacity()) {  // more than two triangles' overlap can have: inconsistent signs
+      r.kind = Triangle_intersection_kind::undecided;
       return;
     }
     // Locations (and the input vertex as the representative of a vertex).

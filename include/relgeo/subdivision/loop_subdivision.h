@@ -112,10 +112,12 @@ class Loop_subdivider {
   }
 
   /// The limit positions of the mesh's own vertices (stencils of loop_masks.h).
+  /// The same input contract as refine (analyse).
   std::vector<Point> limit_positions(const Mesh& m) {
     const Default_fp_environment_if<K::is_certified> environment;
     check_coordinates(m);
     const Mesh_topology t = Mesh_topology::build(m);
+    require_no_faces_sharing_two_edges(t, "Loop subdivision");
     const Loop_features f = classify_loop_features(t, m.tags);
     std::vector<Point> out;
     out.reserve(m.vertices.size());

@@ -4,11 +4,13 @@
 //
 // The phases (Boolean_timing names them):
 //  1. check     operands are closed, oriented 2-manifolds with finite
-//               coordinates, no degenerate face and no self-intersection;
+//               coordinates, no degenerate face and no self-intersection
+//               (their topology and face hierarchies are kept for later);
 //  2. broad     face pairs whose boxes overlap (two Face_bvh hierarchies);
 //  3. narrow    each pair intersected exactly (intersect_triangles): new
 //               vertices are implicit points, and the same point reached from
-//               several pairs becomes one vertex (sorted by compare_xyz);
+//               several pairs becomes one vertex (by the two cells it joins,
+//               then sorted by compare_xyz);
 //  4. retriangulation  each face that meets the other operand is
 //               triangulated in its plane with those points and the
 //               intersection segments as constraints (face_triangulation.h);

@@ -142,6 +142,20 @@ std::vector<unsigned char> degenerate_face_flags(const K& k, const Points& point
   return flag;
 }
 
+/// The whole test on a mesh whose face hierarchy `bvh` is built.
+template <class K, class P>
+Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k, const Face_bvh& bvh,
+                                           int threads) {
+  const Kernel_points<K, P> point(m.vertices, k);
+  Self_intersections out;
+  out.coordinates_exact = point.exact();
+  const std::vector<unsigned char> skip = degenerate_face_flags(k, point, m.faces);
+  for (Index f = 0; f < skip.size(); ++f)
+    if (skip[f]) (skip[f] == 1 ? out.degenerate_faces : out.undecided_faces).push_back(f);
+  find_self_intersections(k, point, m.faces, skip, bvh, threads, out);
+  return out;
+}
+
 }  // namespace internal
 
 /// \brief Every pair of faces (f < g) of `m` that meet other than in a
@@ -159,14 +173,7 @@ template <class K, class P>
 Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k,
                                            const Self_intersection_options& options) {
   const Face_bvh bvh(m, {.threads = options.threads});  // throws for bad indices and NaN
-  const internal::Kernel_points<K, P> point(m.vertices, k);
-  Self_intersections out;
-  out.coordinates_exact = point.exact();
-  const std::vector<unsigned char> skip = internal::degenerate_face_flags(k, point, m.faces);
-  for (Index f = 0; f < skip.size(); ++f)
-    if (skip[f]) (skip[f] == 1 ? out.degenerate_faces : out.undecided_faces).push_back(f);
-  internal::find_self_intersections(k, point, m.faces, skip, bvh, options.threads, out);
-  return out;
+  return internal::find_self_intersections(m, k, bvh, options.threads);
 }
 /// The same with K's default object (K: by default
 /// Default_self_intersection_kernel<P>).
@@ -214,15 +221,9 @@ Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& opt
                    r.is_manifold() && r.is_consistently_oriented() &&
                    !r.has(Mesh_defect::non_finite_coordinate);
   if (!can) return r;
-  using Kernel = typename Default_self_intersection_kernel<P>::type;
-  const Kernel k{};
   bvh.emplace(m, Face_bvh_options{.threads = threads});
-  const internal::Kernel_points<Kernel, P> point(m.vertices, k);
-  Self_intersections found;
-  const std::vector<unsigned char> skip = internal::degenerate_face_flags(k, point, m.faces);
-  for (Index f = 0; f < skip.size(); ++f)
-    if (skip[f] == 2) found.undecided_faces.push_back(f);
-  internal::find_self_intersections(k, point, m.faces, skip, *bvh, threads, found);
+  const Self_intersections found =
+      internal::find_self_intersections(m, typename Default_self_intersection_kernel<P>::type{}, *bvh, threads);
   if (!found.undecided.empty() || !found.undecided_faces.empty())
     throw Error(Error_code::computation_failure,
                 "check_solid: the kernel left " + std::to_string(found.undecided.size()) + " pairs and " +

@@ -7,6 +7,10 @@
 // what the two faces share (internal/face_pair_predicates.h: no vertex ->
 // an edge of one meets the other; a vertex -> the opposite edges against
 // the other face; an edge -> folded onto each other; all three -> identical).
+// check_solid, which has the mesh's topology, first certifies the vertices
+// whose star a projection along a coordinate axis maps one to one
+// (internal/embedded_stars.h): the pairs of faces around such a vertex,
+// nearly all candidate pairs of a smooth mesh, need no further predicate.
 // Under Filtered_exact_kernel (the default for double coordinates) and
 // Exact_kernel every pair is decided exactly; a fail-safe or interval
 // kernel lists the pairs it cannot decide instead of guessing. It decides
@@ -19,6 +23,7 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -30,6 +35,7 @@
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/mesh/face_bvh.h"
+#include "relgeo/mesh/internal/embedded_stars.h"
 #include "relgeo/mesh/internal/face_pair_predicates.h"
 #include "relgeo/mesh/internal/kernel_points.h"
 #include "relgeo/mesh/internal/point_access.h"
@@ -80,11 +86,13 @@ struct Self_intersections {
 namespace internal {
 
 /// The narrow phase on candidate pairs from `bvh`, for points already in K
-/// and faces flagged degenerate (1), undecided (2) or testable (0).
+/// and faces flagged degenerate (1), undecided (2) or testable (0). Pairs
+/// sharing a vertex flagged in `embedded` (embedded_star_flags) are decided
+/// by that certificate.
 template <class K, class Points>
 void find_self_intersections(const K& k, const Points& point, const std::vector<Triangle>& faces,
                              const std::vector<unsigned char>& skip, const Face_bvh& bvh, int threads,
-                             Self_intersections& out) {
+                             Self_intersections& out, const std::vector<unsigned char>* embedded = nullptr) {
   struct Hit {
     Face_pair pair;
     bool decided;  // false: undecided
@@ -92,6 +100,7 @@ void find_self_intersections(const K& k, const Points& point, const std::vector<
   const std::vector<Hit> hits = bvh.collect_overlapping_pairs<Hit>(
       [&](Index f, Index g, std::vector<Hit>& found) {
         if (skip[f] || skip[g]) return;
+        if (embedded && share_embedded_star(faces[f], faces[g], *embedded)) return;
         const Maybe meet = faces_meet_beyond_shared(k, point, faces[f], faces[g]);
         if (!meet) found.push_back({{f, g}, false});
         else if (*meet) found.push_back({{f, g}, true});
@@ -102,57 +111,45 @@ void find_self_intersections(const K& k, const Points& point, const std::vector<
   std::sort(out.undecided.begin(), out.undecided.end());
 }
 
-/// Flags degenerate faces (1: repeated vertex or collinear; 2: undecided).
-/// Three points are collinear iff their orientation is zero in each of the
-/// three coordinate planes (the components of the normal): one definite
-/// nonzero projection decides, so a kernel that doubts one projection (a
-/// nearly vertical face seen from above) still decides through another.
-template <class K, class Points>
-std::vector<unsigned char> degenerate_face_flags(const K& k, const Points& point, const std::vector<Triangle>& faces) {
-  using A = Point_access<typename K::Point_3>;
-  using P2 = typename K::Point_2;
-  const auto orient = k.orientation_2_object();
-  const auto project = [](const typename K::Point_3& p, int plane) {
-    switch (plane) {
-      case 0: return P2{A::x(p), A::y(p)};
-      case 1: return P2{A::y(p), A::z(p)};
-      default: return P2{A::z(p), A::x(p)};
+/// Flags degenerate faces (1: repeated vertex or collinear; 2: undecided)
+/// from their projected orientations. Three points are collinear iff their
+/// orientation is zero in each of the three coordinate planes (the
+/// components of the normal): one definite nonzero projection decides, so a
+/// kernel that doubts one projection (a nearly vertical face seen from
+/// above) still decides through another.
+inline std::vector<unsigned char> degenerate_face_flags(const std::vector<std::array<Certified_sign, 3>>& projected) {
+  std::vector<unsigned char> flag(projected.size(), 0);
+  for (std::size_t f = 0; f < projected.size(); ++f) {
+    bool strict = false, uncertain = false;
+    for (Certified_sign s : projected[f]) {
+      strict = strict || s == Certified_sign::positive || s == Certified_sign::negative;
+      uncertain = uncertain || !is_certain(s);
     }
-  };
-  std::vector<unsigned char> flag(faces.size(), 0);
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const Triangle& t = faces[f];
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-      flag[f] = 1;
-      continue;
-    }
-    bool zero = true;
-    for (int plane = 0; plane < 3; ++plane) {
-      const Certified_sign s = orient(project(point[t[0]], plane), project(point[t[1]], plane),
-                                      project(point[t[2]], plane));
-      if (s == Certified_sign::positive || s == Certified_sign::negative) {
-        zero = false;
-        flag[f] = 0;
-        break;
-      }
-      if (!is_certain(s)) zero = false, flag[f] = 2;
-    }
-    if (zero) flag[f] = 1;
+    flag[f] = strict ? 0 : uncertain ? 2 : 1;
   }
   return flag;
 }
+template <class K, class Points>
+std::vector<unsigned char> degenerate_face_flags(const K& k, const Points& point, const std::vector<Triangle>& faces) {
+  return degenerate_face_flags(projected_orientations(k, point, faces));
+}
 
-/// The whole test on a mesh whose face hierarchy `bvh` is built.
+/// The whole test on a mesh whose face hierarchy `bvh` is built; with its
+/// topology `t` (a manifold, consistently oriented mesh) the pairs around
+/// vertices with an embedded star are decided by that certificate.
 template <class K, class P>
 Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k, const Face_bvh& bvh,
-                                           int threads) {
+                                           int threads, const Mesh_topology* t = nullptr) {
   const Kernel_points<K, P> point(m.vertices, k);
   Self_intersections out;
   out.coordinates_exact = point.exact();
-  const std::vector<unsigned char> skip = degenerate_face_flags(k, point, m.faces);
+  const std::vector<std::array<Certified_sign, 3>> projected = projected_orientations(k, point, m.faces);
+  const std::vector<unsigned char> skip = degenerate_face_flags(projected);
   for (Index f = 0; f < skip.size(); ++f)
     if (skip[f]) (skip[f] == 1 ? out.degenerate_faces : out.undecided_faces).push_back(f);
-  find_self_intersections(k, point, m.faces, skip, bvh, threads, out);
+  std::vector<unsigned char> embedded;
+  if (t) embedded = embedded_star_flags(k, point, m.faces, projected, skip, *t);
+  find_self_intersections(k, point, m.faces, skip, bvh, threads, out, t ? &embedded : nullptr);
   return out;
 }
 
@@ -223,7 +220,7 @@ Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& opt
   if (!can) return r;
   bvh.emplace(m, Face_bvh_options{.threads = threads});
   const Self_intersections found =
-      internal::find_self_intersections(m, typename Default_self_intersection_kernel<P>::type{}, *bvh, threads);
+      internal::find_self_intersections(m, typename Default_self_intersection_kernel<P>::type{}, *bvh, threads, &t);
   if (!found.undecided.empty() || !found.undecided_faces.empty())
     throw Error(Error_code::computation_failure,
                 "check_solid: the kernel left " + std::to_string(found.undecided.size()) + " pairs and " +

@@ -329,6 +329,7 @@ class Boolean_engine {
     Face_triangulator<K> triangulator(k_, points_);
     for (int m = 0; m < 2; ++m) {
       const Mesh& mesh = *mesh_[m];
+      pieces_[m].piece_of_face.assign(mesh.faces.size(), invalid_index);
       for (Index f = 0; f < mesh.faces.size(); ++f) {
         const Triangle& t = mesh.faces[f];
         const std::array<Index, 3> corners{find(offset_[m] + t[0]), find(offset_[m] + t[1]), find(offset_[m] + t[2])};
@@ -336,6 +337,7 @@ class Boolean_engine {
         bool split = slot[m][f] != invalid_index;
         for (int e = 0; e < 3 && !split; ++e) split = !edge_points[m][topology[m]->edge(3 * f + e)].empty();
         if (!split) {
+          pieces_[m].piece_of_face[f] = static_cast<Index>(pieces_[m].triangles.size());
           pieces_[m].triangles.push_back(corners);
           pieces_[m].input_face.push_back(f);
           continue;
@@ -382,15 +384,12 @@ class Boolean_engine {
   // ---- 5. labelling ---------------------------------------------------------------
 
   bool label(Result& r) {
-    std::array<Mesh_topology, 2> topology;
+    std::array<Piece_adjacency, 2> adjacency;
+    for (int m = 0; m < 2; ++m)
+      if (!adjacency[m].build(pieces_[m], *topology_[m]))  // only a naive kernel's inconsistent answers can do that
+        return fail(r, "labelling: the pieces of an operand are not consistently oriented");
     for (int m = 0; m < 2; ++m) {
-      std::vector<Mesh_issue> issues;
-      topology[m] = Mesh_topology::build_checked(points_.size(), pieces_[m].triangles, issues);
-      if (!issues.empty())  // only a naive kernel's inconsistent answers can do that
-        return fail(r, "labelling: the pieces of an operand do not form a manifold");
-    }
-    for (int m = 0; m < 2; ++m) {
-      const auto [patch, count] = patches(topology[m], curves_);
+      const auto [patch, count] = patches(pieces_[m], adjacency[m], curves_);
       r.counts.patches += count;
       std::vector<Piece_label> patch_label(count, Piece_label::unknown);
       // Coplanar pieces first, then a curve edge of each patch, then rays.
@@ -405,7 +404,7 @@ class Boolean_engine {
         for (int k = 0; k < 3; ++k) {
           const Index u = pieces_[m].triangles[t][k], w = pieces_[m].triangles[t][(k + 1) % 3];
           if (!curves_.contains(u, w)) continue;
-          const Piece_label l = edge_label(m, t, k, topology[1 - m]);
+          const Piece_label l = edge_label(m, t, k, adjacency[1 - m]);
           if (l != Piece_label::unknown) {
             patch_label[patch[t]] = l;
             break;
@@ -460,10 +459,10 @@ class Boolean_engine {
   }
 
   // Decided at curve edge k of piece t: the other operand's pieces on it.
-  Piece_label edge_label(int m, Index t, int k, const Mesh_topology& other) {
+  Piece_label edge_label(int m, Index t, int k, const Piece_adjacency& other) {
     const Triangle& piece = pieces_[m].triangles[t];
     const Index u = piece[k], w = piece[(k + 1) % 3], x = piece[(k + 2) % 3];
-    const Index h1 = other.find_halfedge(u, w), h2 = other.find_halfedge(w, u);
+    const Index h1 = other.find(u, w), h2 = other.find(w, u);
     if (h1 == invalid_index || h2 == invalid_index) return Piece_label::unknown;
     const Index b1 = h1 / 3, b2 = h2 / 3;
     const int o = 1 - m;

@@ -38,10 +38,66 @@ enum class Piece_label : std::uint8_t {
 };
 
 /// Pieces of one operand: triangles of global point indices, each with the
-/// input face it comes from.
+/// input face it comes from; an input face that was not split is one piece,
+/// with its corners in the face's order.
 struct Pieces {
   std::vector<Triangle> triangles;
   std::vector<Index> input_face;
+  std::vector<Index> piece_of_face;  ///< the piece of each input face not split; invalid_index if split
+};
+
+/// The half-edge adjacency of one operand's pieces (half-edge 3 t + i of
+/// piece t goes from corner i to corner i + 1), derived from the operand's
+/// topology instead of built anew: a piece that is a whole input face takes
+/// its opposites from the face's when the neighbour is whole too; the
+/// half-edges of split faces' pieces, and those of whole faces next to a
+/// split face, are matched by their end points (the only half-edges whose
+/// opposite the operand's topology does not give, and the only ones on a
+/// curve: a curve edge lies in a split face).
+class Piece_adjacency {
+ public:
+  /// False when a directed edge occurs twice among the matched half-edges
+  /// (pieces no consistent surface has: only a naive kernel's answers can
+  /// give them).
+  bool build(const Pieces& p, const Mesh_topology& operand) {
+    const Index n = static_cast<Index>(p.triangles.size());
+    opposite_.assign(3 * std::size_t(n), invalid_index);
+    matched_.clear();
+    for (Index t = 0; t < n; ++t) {
+      const Index f = p.input_face[t];
+      const bool whole = p.piece_of_face[f] == t;
+      for (Index i = 0; i < 3; ++i) {
+        if (whole) {
+          const Index o = operand.opposite(3 * f + i);
+          if (o == invalid_index) continue;  // the operand's boundary
+          const Index g = p.piece_of_face[o / 3];
+          if (g != invalid_index) {
+            opposite_[3 * t + i] = 3 * g + o % 3;
+            continue;
+          }
+        }
+        const Triangle& tri = p.triangles[t];
+        matched_.push_back({key(tri[i], tri[(i + 1) % 3]), 3 * t + i});
+      }
+    }
+    std::sort(matched_.begin(), matched_.end());
+    for (std::size_t j = 1; j < matched_.size(); ++j)
+      if (matched_[j].first == matched_[j - 1].first) return false;
+    for (const auto& [k, h] : matched_) opposite_[h] = find(static_cast<Index>(k & 0xFFFFFFFFu), static_cast<Index>(k >> 32));
+    return true;
+  }
+  Index opposite(Index h) const { return opposite_[h]; }
+  /// The half-edge u -> w of a piece on a split face or next to one
+  /// (every curve edge), invalid_index when there is none.
+  Index find(Index u, Index w) const {
+    const auto it = std::lower_bound(matched_.begin(), matched_.end(), std::pair{key(u, w), Index{0}});
+    return it != matched_.end() && it->first == key(u, w) ? it->second : invalid_index;
+  }
+
+ private:
+  static std::uint64_t key(Index u, Index w) { return (std::uint64_t{u} << 32) | w; }
+  std::vector<Index> opposite_;
+  std::vector<std::pair<std::uint64_t, Index>> matched_;  // (source, target) -> half-edge, sorted
 };
 
 /// Set of undirected edges (the intersection curves).
@@ -69,10 +125,11 @@ class Edge_set {
 };
 
 /// Patches of pieces: components across edges that are not curve edges,
-/// through the pieces' half-edge topology. Returns the patch of each piece
-/// and the number of patches.
-inline std::pair<std::vector<Index>, Index> patches(const Mesh_topology& topology, const Edge_set& curves) {
-  const std::size_t n = topology.number_of_faces();
+/// through the pieces' adjacency. Returns the patch of each piece and the
+/// number of patches.
+inline std::pair<std::vector<Index>, Index> patches(const Pieces& pieces, const Piece_adjacency& adjacency,
+                                                    const Edge_set& curves) {
+  const std::size_t n = pieces.triangles.size();
   std::vector<Index> patch(n, invalid_index);
   Index count = 0;
   std::vector<Index> stack;
@@ -84,9 +141,10 @@ inline std::pair<std::vector<Index>, Index> patches(const Mesh_topology& topolog
       const Index t = stack.back();
       stack.pop_back();
       for (Index h = 3 * t; h < 3 * t + 3; ++h) {
-        const Index o = topology.opposite(h);
+        const Index o = adjacency.opposite(h);
         if (o == invalid_index || patch[o / 3] != invalid_index) continue;
-        if (curves.contains(topology.source(h), topology.target(h))) continue;
+        const Triangle& tri = pieces.triangles[t];
+        if (curves.contains(tri[h % 3], tri[(h + 1) % 3])) continue;
         patch[o / 3] = count;
         stack.push_back(o / 3);
       }

@@ -325,7 +325,7 @@ class Boolean_engine {
       constraints(0, s.fa).segments.push_back({a, b});
       constraints(1, s.fb).segments.push_back({a, b});
     }
-    curves_.finish();
+    curves_.finish(points_.size());
     Face_triangulator<K> triangulator(k_, points_);
     for (int m = 0; m < 2; ++m) {
       const Mesh& mesh = *mesh_[m];
@@ -579,10 +579,7 @@ class Boolean_engine {
       }
       return n;
     };
-    // The curves that are edges of the output are its creases (looked up
-    // only for output edges between two curve points).
-    std::vector<char> on_curve(points_.size(), 0);
-    for (const Edge& e : curves_.edges()) on_curve[e.a] = on_curve[e.b] = 1;
+    // The curves that are edges of the output are its creases.
     std::vector<Edge> creases;
     for (int m = 0; m < 2; ++m)
       for (Index t = 0; t < pieces_[m].triangles.size(); ++t) {
@@ -594,7 +591,7 @@ class Boolean_engine {
         r.provenance.push_back({static_cast<std::uint8_t>(m), pieces_[m].input_face[t]});
         for (int k = 0; k < 3; ++k) {
           const Index u = tri[k], w = tri[(k + 1) % 3];
-          if (on_curve[u] && on_curve[w] && curves_.contains(u, w)) creases.push_back({new_index[u], new_index[w]});
+          if (curves_.contains(u, w)) creases.push_back({new_index[u], new_index[w]});
         }
       }
     locate_output_vertices(new_index, r);

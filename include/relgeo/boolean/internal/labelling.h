@@ -100,21 +100,24 @@ class Piece_adjacency {
   std::vector<std::pair<std::uint64_t, Index>> matched_;  // (source, target) -> half-edge, sorted
 };
 
-/// Set of undirected edges (the intersection curves).
+/// Set of undirected edges (the intersection curves) between points
+/// 0..n-1: insert them all, then finish(n).
 class Edge_set {
  public:
   void insert(Index u, Index w) { set_.push_back(key(u, w)); }
-  void finish() {
+  void finish(std::size_t number_of_points) {
     std::sort(set_.begin(), set_.end());
     set_.erase(std::unique(set_.begin(), set_.end()), set_.end());
+    on_edge_.assign(number_of_points, 0);
+    for (std::uint64_t k : set_) on_edge_[k >> 32] = on_edge_[k & 0xFFFFFFFFu] = 1;
   }
-  bool contains(Index u, Index w) const { return std::binary_search(set_.begin(), set_.end(), key(u, w)); }
+  /// Whether {u, w} is in the set (most edges asked about have an end on
+  /// no edge of the set: one look-up per end decides them).
+  bool contains(Index u, Index w) const {
+    return u < on_edge_.size() && w < on_edge_.size() && on_edge_[u] && on_edge_[w] &&
+           std::binary_search(set_.begin(), set_.end(), key(u, w));
+  }
   std::size_t size() const { return set_.size(); }
-  std::vector<Edge> edges() const {
-    std::vector<Edge> out;
-    for (std::uint64_t k : set_) out.push_back({static_cast<Index>(k >> 32), static_cast<Index>(k & 0xFFFFFFFFu)});
-    return out;
-  }
 
  private:
   static std::uint64_t key(Index u, Index w) {
@@ -122,6 +125,7 @@ class Edge_set {
     return (std::uint64_t{a} << 32) | b;
   }
   std::vector<std::uint64_t> set_;
+  std::vector<char> on_edge_;  // per point: an end of an edge of the set
 };
 
 /// Patches of pieces: components across edges that are not curve edges,

@@ -201,6 +201,11 @@ run_fuzz_campaign() {
   local seconds=${1:-3600}; shift || true
   [[ $seconds =~ ^[0-9]+$ ]] || { log "error: fuzz SECONDS must be a number, got '$seconds'"; exit 2; }
   build_fuzzers
+  # nice alone does not yield to other sessions' work when the kernel groups
+  # tasks by session (sched_autogroup): lower the session's group too, so a
+  # campaign started with setsid or from another terminal runs in the
+  # machine's idle time.
+  echo 19 >/proc/self/autogroup 2>/dev/null || true
   local harnesses=("$@")
   ((${#harnesses[@]} > 0)) || mapfile -t harnesses < <(fuzz_harnesses)
   mkdir -p "$fuzz_work/corpus" "$fuzz_work/findings" "$fuzz_work/logs" "$fuzz_work/tmp"

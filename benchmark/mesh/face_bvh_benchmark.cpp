@@ -10,7 +10,9 @@
 //    self_intersections);
 //  * self_intersections/<mesh>/<subject>: the exact self-intersection test,
 //    relgeo::self_intersections (Filtered_exact_kernel) against
-//    CGAL::Polygon_mesh_processing::self_intersections over Epick;
+//    CGAL::Polygon_mesh_processing::self_intersections over Epick, and
+//    relgeo::check_solid (every check of check_mesh, then the test with the
+//    embedded-star certificate for neighbouring faces);
 //  * validate_solid/<mesh>/relgeo filtered: the whole validation report
 //    (no peer; for scale).
 // Each subject is measured 5 times (3 on the 10^6-face case); the table at the
@@ -110,6 +112,19 @@ void relgeo_self_intersections(benchmark::State& state, const std::string& case_
   state.counters["pairs"] = static_cast<double>(pairs);
 }
 
+// check_solid: every check of check_mesh, then the self-intersection test
+// with the embedded-star certificate for neighbouring faces.
+void relgeo_check_solid(benchmark::State& state, const std::string& case_name) {
+  const Mesh& m = mesh_pair_case(case_name).a;
+  std::size_t pairs = 0;
+  for (auto _ : state) {
+    const relgeo::Mesh_report r = relgeo::check_solid(m);
+    pairs = r.count(relgeo::Mesh_defect::self_intersection);
+    benchmark::DoNotOptimize(r.issues.data());
+  }
+  state.counters["pairs"] = static_cast<double>(pairs);
+}
+
 void relgeo_validate(benchmark::State& state, const std::string& case_name) {
   const Mesh& m = mesh_pair_case(case_name).a;
   std::size_t pairs = 0;
@@ -173,6 +188,7 @@ void register_subjects() {
     register_cgal_subjects("self_pairs", c, 2);
     register_subject("self_intersections/" + c + "/relgeo filtered", relgeo_self_intersections<1>, c);
     register_cgal_subjects("self_intersections", c, 1);
+    register_subject("self_intersections/" + c + "/relgeo check_solid (all checks)", relgeo_check_solid, c);
     register_subject("self_intersections/" + c + "/relgeo filtered 2 threads", relgeo_self_intersections<2>, c);
     register_cgal_subjects("self_intersections", c, 2);
     register_subject("validate_solid/" + c + "/relgeo filtered", relgeo_validate, c);

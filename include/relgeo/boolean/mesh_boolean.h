@@ -76,6 +76,7 @@ class Boolean_engine {
     for (int m = 0; m < 2; ++m)
       if (!bvh_[m]) bvh_[m].emplace(*mesh_[m], Face_bvh_options{.threads = options_.threads});
     const std::vector<Face_pair> pairs = bvh_[0]->overlapping_pairs(*bvh_[1], options_.threads);
+    for (auto& bvh : bvh_) bvh.reset();  // each phase frees what no later one needs (peak memory)
     r.counts.candidate_pairs = pairs.size();
     r.time.broad_phase = clock.lap();
     if (!narrow_phase(pairs, r)) return finish_failed(r, clock, &Boolean_timing::narrow_phase);
@@ -83,6 +84,7 @@ class Boolean_engine {
     if (!retriangulate(r)) return finish_failed(r, clock, &Boolean_timing::retriangulation);
     r.time.retriangulation = clock.lap();
     if (!label(r)) return finish_failed(r, clock, &Boolean_timing::labelling);
+    for (auto& t : topology_) t.reset();
     r.time.labelling = clock.lap();
     assemble(r);
     r.time.assembly = clock.lap();
@@ -143,6 +145,11 @@ class Boolean_engine {
     const auto make = k_.construct_implicit_point_3_object();
     offset_[0] = 0;
     offset_[1] = static_cast<Index>(mesh_[0]->vertices.size());
+    // Room for new points too (a few percent of the operands' vertices in
+    // practice; pages not written are not resident), so that they are
+    // rarely copied.
+    const std::size_t n = mesh_[0]->vertices.size() + mesh_[1]->vertices.size();
+    points_.reserve(n + n / 4 + 1024);
     for (int m = 0; m < 2; ++m)
       for (const auto& v : mesh_[m]->vertices) points_.push_back(make(p(v.x, v.y, v.z)));
     parent_.resize(points_.size());
@@ -579,6 +586,22 @@ class Boolean_engine {
       }
       return n;
     };
+    // The output's sizes first, so that its arrays are allocated once (no
+    // copy on growth: the copies were the peak of the run's memory).
+    {
+      std::size_t faces = 0, vertices = 0;
+      std::vector<char> used(points_.size(), 0);
+      for (int m = 0; m < 2; ++m)
+        for (Index t = 0; t < pieces_[m].triangles.size(); ++t) {
+          bool flip = false;
+          if (!keeps(m, labels_[m][t], flip)) continue;
+          ++faces;
+          for (Index g : pieces_[m].triangles[t])
+            if (!used[g]) used[g] = 1, ++vertices;
+        }
+      r.mesh.faces.reserve(faces), r.provenance.reserve(faces);
+      r.mesh.vertices.reserve(vertices), r.exact_vertices.reserve(vertices);
+    }
     // The curves that are edges of the output are its creases.
     std::vector<Edge> creases;
     for (int m = 0; m < 2; ++m)

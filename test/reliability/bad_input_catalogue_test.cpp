@@ -149,6 +149,8 @@ std::vector<Entry> catalogue() {
        [] { return read_error_unreadable("fuzz_off_binary_huge_corner_count.off", {"face 1 announces more corners"}); }},
       {"fuzz_ply_property_before_element.ply", "a property line before any element (found by fuzz/mesh_ply)",
        [] { return read_error_unreadable("fuzz_ply_property_before_element.ply", {"header line 4", "property before any element"}); }},
+      {"list_coordinate.ply", "a vertex coordinate declared as a list (found by fuzz/mesh_ply, reduced)",
+       [] { return read_error_unreadable("list_coordinate.ply", {"header line 6", "vertex coordinate 'z' declared as a list"}); }},
       // ---- indices ----------------------------------------------------------------------
       {"negative_index.off", "index -3",
        [] { return read_error_unreadable("negative_index.off", {"line 10", "corner 2 of face 3", "'-3'"}); }},

@@ -70,6 +70,11 @@ def main():
                          "property float z\nend_header\nzero one two\n1 0 0\n0 1 0\n")
     write("garbage.stl", bytes(range(60)))                            # shorter than a binary STL header
     write("not_off_keyword.off", "MESH\n4 4 0\n" + off(TETRA_V, TETRA_F).split("\n", 2)[2])
+    # a vertex coordinate declared as a list (CGAL's reader dereferences a
+    # null cast; found by fuzz/mesh_ply, reduced)
+    write("list_coordinate.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                 "property list uchar float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                 "end_header\n0 0 1 0\n1 0 1 0\n0 1 1 0\n3 0 1 2\n")
     # wrong counts
     write("wrong_counts_fewer.off", off(TETRA_V, TETRA_F, "OFF\n4 3 0\n"))   # 4 faces follow
     write("wrong_counts_more.ply", ply_binary(TETRA_V, TETRA_F, face_count=5))

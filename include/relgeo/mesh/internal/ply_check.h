@@ -121,6 +121,7 @@ class Ply_check {
       } else if (w[0] == "property") {
         if (elements_.empty()) fail_header("a property before any element");
         Property p;
+        std::string_view type, name;
         if (w.size() >= 2 && w[1] == "list") {
           if (w.size() < 5) fail_header("'property list COUNT_TYPE ITEM_TYPE NAME' expected");
           p.count_size = type_size(w[2], &p.count_signed);
@@ -128,19 +129,22 @@ class Ply_check {
           if (p.count_size == 0 || p.count_size > 4 || w[2].find("float") != std::string_view::npos ||
               w[2] == "double")
             fail_header("list count type '" + std::string(w[2].substr(0, 40)) + "' is not an integer type");
+          type = w[3], name = w[4];
         } else {
           if (w.size() < 3) fail_header("'property TYPE NAME' expected");
           p.size = type_size(w[1]);
-          // CGAL's reader casts vertex coordinates to float or double
-          // without checking (a null pointer for any other type; found by
-          // fuzz/mesh_ply).
-          const bool coordinate = elements_.back().name == "vertex" && (w[2] == "x" || w[2] == "y" || w[2] == "z");
-          const bool floating = w[1] == "float" || w[1] == "float32" || w[1] == "double" || w[1] == "float64";
-          if (coordinate && p.size != 0 && !floating)
-            fail_header("vertex coordinate '" + std::string(w[2]) + "' of type '" + std::string(w[1].substr(0, 40)) +
-                        "': float or double expected");
+          type = w[1], name = w[2];
         }
         if (p.size == 0) fail_header("unknown property type");
+        // CGAL's reader casts vertex coordinates to a float or double scalar
+        // without checking (a null pointer for any other type, and for a
+        // list; both found by fuzz/mesh_ply).
+        const bool coordinate = elements_.back().name == "vertex" && (name == "x" || name == "y" || name == "z");
+        const bool floating = type == "float" || type == "float32" || type == "double" || type == "float64";
+        if (coordinate && (p.count_size != 0 || !floating))
+          fail_header("vertex coordinate '" + std::string(name) + "' declared as " +
+                      (p.count_size != 0 ? std::string("a list") : "type '" + std::string(type.substr(0, 40)) + "'") +
+                      ": a float or double scalar expected");
         elements_.back().properties.push_back(p);
       }
       // comment, obj_info and unknown keywords: ignored, as CGAL does

@@ -131,7 +131,7 @@ inline std::vector<unsigned char> degenerate_face_flags(const std::vector<std::a
 }
 template <class K, class Points>
 std::vector<unsigned char> degenerate_face_flags(const K& k, const Points& point, const std::vector<Triangle>& faces) {
-  return degenerate_face_flags(projected_orientations(k, point, faces));
+  return degenerate_face_flags(projected_orientations(k, point, faces, /*every_plane=*/false));
 }
 
 /// The whole test on a mesh whose face hierarchy `bvh` is built; with its
@@ -143,7 +143,10 @@ Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k
   const Kernel_points<K, P> point(m.vertices, k);
   Self_intersections out;
   out.coordinates_exact = point.exact();
-  const std::vector<std::array<Certified_sign, 3>> projected = projected_orientations(k, point, m.faces);
+  // Every plane only when the stars need them (the first strict sign
+  // decides degeneracy).
+  const std::vector<std::array<Certified_sign, 3>> projected =
+      projected_orientations(k, point, m.faces, /*every_plane=*/t != nullptr);
   const std::vector<unsigned char> skip = degenerate_face_flags(projected);
   for (Index f = 0; f < skip.size(); ++f)
     if (skip[f]) (skip[f] == 1 ? out.degenerate_faces : out.undecided_faces).push_back(f);

@@ -53,10 +53,14 @@ typename K::Point_2 project_to_plane(const typename K::Point_3& p, int plane) {
 }
 
 /// The orientation of every face projected to each coordinate plane.
-/// Faces with a repeated vertex get `zero` in all three.
+/// Faces with a repeated vertex get `zero` in all three. Without
+/// `every_plane` a face's planes after its first strict sign are left
+/// `uncertain` (not computed): enough to tell degenerate faces, not for
+/// embedded_star_flags.
 template <class K, class Points>
 std::vector<std::array<Certified_sign, 3>> projected_orientations(const K& k, const Points& point,
-                                                                  const std::vector<Triangle>& faces) {
+                                                                  const std::vector<Triangle>& faces,
+                                                                  bool every_plane = true) {
   const auto orient = k.orientation_2_object();
   std::vector<std::array<Certified_sign, 3>> s(faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -65,15 +69,18 @@ std::vector<std::array<Certified_sign, 3>> projected_orientations(const K& k, co
       s[f].fill(Certified_sign::zero);
       continue;
     }
-    for (int plane = 0; plane < 3; ++plane)
+    s[f].fill(Certified_sign::uncertain);
+    for (int plane = 0; plane < 3; ++plane) {
       s[f][plane] = orient(project_to_plane<K>(point[t[0]], plane), project_to_plane<K>(point[t[1]], plane),
                            project_to_plane<K>(point[t[2]], plane));
+      if (!every_plane && (s[f][plane] == Certified_sign::positive || s[f][plane] == Certified_sign::negative)) break;
+    }
   }
   return s;
 }
 
 /// For each vertex, 1 when its star is certified embedded by a projection
-/// (file comment), 0 otherwise. `skip`: faces left out of the test
+/// (file comment), 0 otherwise; `projected` computed on every plane. `skip`: faces left out of the test
 /// (degenerate or undecided); a vertex of one is not certified.
 /// \pre `t` is the topology of `faces`, an edge- and vertex-manifold,
 /// consistently oriented mesh (boundary vertices are never certified).

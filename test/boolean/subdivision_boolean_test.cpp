@@ -63,12 +63,13 @@ void expect_valid_control_mesh(const R& r) {
       << v.summary();
   EXPECT_TRUE(v.has_no_defect()) << v.summary();
   EXPECT_TRUE(v.separated_pieces.passed()) << v.summary();
-  // Adjacent pieces are never reported as certified (not implemented), and
-  // the report names them.
-  EXPECT_EQ(v.adjacent_pieces.status, Check_status::not_checked);
-  EXPECT_EQ(v.adjacent_pieces.count, v.adjacent_pairs);
-  EXPECT_EQ(v.adjacent_pieces.where.size(), std::min<std::size_t>(v.adjacent_pairs, 100));
-  EXPECT_FALSE(v.is_certified());
+  // Neighbouring pieces: certified where the influence regions are regular,
+  // the rest (around extraordinary and irregular crease vertices: the
+  // operands are Loop spheres with valence-5 vertices) undecided and named.
+  EXPECT_TRUE(v.adjacent_pieces.status == Check_status::pass || v.adjacent_pieces.status == Check_status::undecided)
+      << v.adjacent_pieces.note;
+  EXPECT_EQ(v.adjacent_pieces.where.size(), std::min<std::size_t>(v.adjacent_pieces.count, 100));
+  EXPECT_EQ(v.is_certified(), v.adjacent_pieces.passed());
 }
 
 // ---- every certified kernel ----------------------------------------------------
@@ -82,7 +83,7 @@ TYPED_TEST_SUITE(SubdivisionBoolean, Kernels);
 // its limit surface approaches the polyhedral result at least 2x per level
 // from level 1 to 3 (measured: about 4x, the limit mesh's O(h^2)).
 TYPED_TEST(SubdivisionBoolean, SpheresUnionConvergesWithTheLevel) {
-  double previous = std::numeric_limits<double>::infinity();
+  double previous = std::numeric_limits<double>::infinity(), previous_undecided = 1.5;
   for (unsigned level = 1; level <= 3; ++level) {
     const auto r = subdivision_boolean(sphere_a(), sphere_b(), Op::union_of, level, TypeParam{});
     if (!r.ok()) {  // only the fail-safe kernel may fail, and then it says where
@@ -95,6 +96,13 @@ TYPED_TEST(SubdivisionBoolean, SpheresUnionConvergesWithTheLevel) {
     EXPECT_GT(r.counts.curve_vertices, 10u);
     expect_curves_tagged(r);
     expect_valid_control_mesh(r);
+    // What the adjacent check leaves undecided lies around the irregular
+    // vertices (the spheres' valence-5 vertices, the curves' crease
+    // vertices): a share of the neighbouring pairs that shrinks with the
+    // level (measured: 1.0, 0.53, 0.27 at levels 1-3).
+    const double undecided = double(r.validation.adjacent_pieces.count) / double(r.validation.adjacent_pairs + r.validation.faces);
+    EXPECT_LT(undecided, previous_undecided) << "level " << level << ": " << r.validation.adjacent_pieces.note;
+    previous_undecided = undecided;
     const double d = r.distance_to_polyhedral.hausdorff();
     ASSERT_TRUE(std::isfinite(d));
     EXPECT_LT(d, 0.05);

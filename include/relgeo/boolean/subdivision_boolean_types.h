@@ -49,11 +49,16 @@ struct Subdivision_validation_options {
 /// projections run in interval arithmetic, so the answer holds for the exact
 /// surface and does not depend on the caller's rounding mode. Neighbouring
 /// pieces (supports sharing a control point: faces within two rings) meet
-/// along common boundaries or come close; whether they meet elsewhere needs
-/// the Bezier criteria of the thesis, which are not implemented: such pairs
-/// are counted in `adjacent_pairs` and the `adjacent_pieces` check is
-/// not_checked. A report is therefore never "valid" by omission:
-/// is_certified() requires every check to pass.
+/// along common boundaries or come close: a pair is certified to meet only
+/// where its faces meet when the limit surface over the influence region of
+/// a shared control point (the faces whose limit depends on it) is certified
+/// one to one, from the quartic Bezier nets of its patches (the thesis'
+/// Bezier criteria, Sec. 5.4.2; method in boolean/internal/limit_embedding.h).
+/// That needs regular patches: regions around an extraordinary vertex or an
+/// irregular crease vertex stay undecided, and so do the pairs and pieces no
+/// certified region holds (listed in `adjacent_pieces`). A report is
+/// therefore never "valid" by omission: is_certified() requires every check
+/// to pass.
 struct Subdivision_validation {
   std::size_t vertices = 0, faces = 0;
   Solid_check closed;                 ///< boundary_edge
@@ -66,11 +71,14 @@ struct Subdivision_validation {
   /// Far pieces whose supports' boxes meet: each pair certified disjoint
   /// (pass) or listed as undecided.
   Solid_check separated_pieces;
-  /// Neighbouring pieces (see the class comment): not_checked, with their
-  /// number and the first max_listed pairs (as `undecided` issues).
+  /// Neighbouring pieces and each piece on its own (see the class comment):
+  /// pass when all are certified, else undecided with their number and the
+  /// first max_listed as `undecided` issues: (f, g) a pair, (f) a piece.
   Solid_check adjacent_pieces;
   /// Face pairs the separation test looked at, and how they ended.
   std::size_t candidate_pairs = 0, separated_pairs = 0, adjacent_pairs = 0;
+  /// Influence regions (one per control vertex) certified one to one.
+  std::size_t certified_regions = 0;
   /// The first max_listed undecided pairs (control faces).
   std::vector<std::pair<Index, Index>> undecided_pairs;
 

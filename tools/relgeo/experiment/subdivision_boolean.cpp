@@ -205,10 +205,10 @@ Section_report subdivision_boolean_section(const Experiment_context& ctx) {
       "are cut and merged along the curves (tagged as creases), then fitted (least squares near the curves).\n"
       "d = sampled Hausdorff distance from the result's limit surface to the polyhedral result (d fitted: after\n"
       "fitting; kept: the closer mesh), ratio = d of the previous level / d. validation: each check of the\n"
-      "subdivision solid that did not pass (adjacent pieces are not checked: the Bezier criteria are not\n"
-      "implemented), 'certified' when all pass. Under a certified kernel, a failed check, a ratio below 2 or a\n"
-      "kept fitted mesh farther than the unfitted one is a failure of the section; a kernel that cannot decide\n"
-      "reports 'failed' with the reason.\n"
+      "subdivision solid that did not pass (adjacent pieces: undecided around extraordinary and irregular crease\n"
+      "vertices, which have no Bezier net), 'certified' when all pass. Under a certified kernel, a failed check,\n"
+      "a ratio below 2 or a kept fitted mesh farther than the unfitted one is a failure of the section; a kernel\n"
+      "that cannot decide reports 'failed' with the reason.\n"
       "Pictures: DIR/subdivision-boolean/*.png (limit surfaces " +
       std::to_string(picture_extra_levels) + " levels finer than the control mesh).\n\n");
   rep.add_table(t);

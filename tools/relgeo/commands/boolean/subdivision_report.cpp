@@ -42,6 +42,7 @@ io::Json subdivision_validation_json(const Subdivision_validation& v) {
           {"candidate_pairs", v.candidate_pairs},
           {"separated_pairs", v.separated_pairs},
           {"adjacent_pairs", v.adjacent_pairs},
+          {"certified_regions", v.certified_regions},
           {"undecided_pairs", pairs}};
 }
 

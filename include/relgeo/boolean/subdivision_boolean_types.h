@@ -77,8 +77,9 @@ struct Subdivision_validation {
   Solid_check adjacent_pieces;
   /// Face pairs the separation test looked at, and how they ended.
   std::size_t candidate_pairs = 0, separated_pairs = 0, adjacent_pairs = 0;
-  /// Influence regions (one per control vertex) certified one to one.
-  std::size_t certified_regions = 0;
+  /// Neighbouring pairs certified to meet only where their faces meet, and
+  /// influence regions (one per control vertex) certified one to one.
+  std::size_t certified_adjacent_pairs = 0, certified_regions = 0;
   /// The first max_listed undecided pairs (control faces).
   std::vector<std::pair<Index, Index>> undecided_pairs;
 

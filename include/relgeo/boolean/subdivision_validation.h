@@ -282,6 +282,7 @@ inline void check_adjacent_pieces(Refinement_ladder& ladder, const std::vector<s
   conclude(c, true);
   const std::array<std::size_t, 5> v = check.verdicts_at_control_level();
   r.certified_regions = v[0];
+  r.certified_adjacent_pairs = near.size() - pairs_left;
   c.note = std::to_string(near.size() - pairs_left) + " of " + std::to_string(near.size()) + " neighbouring pairs and " +
            std::to_string(faces - pieces_left) + " of " + std::to_string(faces) +
            " pieces certified one to one (influence regions of control points: " + std::to_string(v[0]) +

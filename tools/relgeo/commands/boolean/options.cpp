@@ -48,7 +48,7 @@ std::string boolean_help_footer() {
          "subdivision_to_polyhedral_fitted: limit_to_polyhedral, polyhedral_to_limit, hausdorff, mean, samples}, "
          "validation (validate_subdivision_solid: certified, summary, checks {closed, edge_manifold, "
          "vertex_manifold, consistently_oriented, valid_tags, separated_pieces, adjacent_pieces: status, count, "
-         "where, note}, candidate_pairs, separated_pairs, adjacent_pairs, certified_regions, undecided_pairs), "
+         "where, note}, candidate_pairs, separated_pairs, adjacent_pairs, certified_adjacent_pairs, certified_regions, undecided_pairs), "
          "polyhedral {status, "
          "failure, undecided_pairs, output, validation (as above), counts, time_s}, time_s {limit_meshes, "
          "boolean, mapping, fitting, distance, validation, layer, total}.\n" +

@@ -42,6 +42,7 @@ io::Json subdivision_validation_json(const Subdivision_validation& v) {
           {"candidate_pairs", v.candidate_pairs},
           {"separated_pairs", v.separated_pairs},
           {"adjacent_pairs", v.adjacent_pairs},
+          {"certified_adjacent_pairs", v.certified_adjacent_pairs},
           {"certified_regions", v.certified_regions},
           {"undecided_pairs", pairs}};
 }
@@ -99,8 +100,8 @@ std::string subdivision_boolean_report_text(const Subdivision_boolean_report_inp
     const Subdivision_validation& v = r.validation;
     s.add("validation", v.summary());
     s.add("face pairs", std::to_string(v.candidate_pairs) + " candidates, " + std::to_string(v.separated_pairs) +
-                            " separated, " + std::to_string(v.adjacent_pairs) + " adjacent (not checked), " +
-                            std::to_string(v.separated_pieces.count) + " undecided");
+                            " separated, " + std::to_string(v.adjacent_pairs) + " adjacent (" + std::to_string(v.certified_adjacent_pairs) + " certified), " +
+                            std::to_string(v.separated_pieces.count) + " far pairs undecided");
   }
   if (r.polyhedral.ok)
     s.add("polyhedral", std::to_string(r.polyhedral.output.faces.size()) + " faces (the Boolean of the limit meshes), " +

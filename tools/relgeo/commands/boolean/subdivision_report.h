@@ -22,7 +22,7 @@ struct Subdivision_boolean_report_input {
 io::Json surface_distance_json(const Surface_distance& d);
 /// {certified, has_no_defect, summary, checks {name: {status, count, where,
 /// note}}, vertices, faces, candidate_pairs, separated_pairs,
-/// adjacent_pairs, certified_regions, undecided_pairs [[f, g], ...]}.
+/// adjacent_pairs, certified_adjacent_pairs, certified_regions, undecided_pairs [[f, g], ...]}.
 io::Json subdivision_validation_json(const Subdivision_validation& v);
 
 /// JSON fields: operation, kernel, kernel_model, certified, status, failure,

@@ -250,6 +250,35 @@ TEST(SubdivisionBoolean, NestedDisjointAndIdenticalOperands) {
   }
 }
 
+// A Loop sphere through the tube of a regular torus (every torus vertex of
+// valence 6): the result validates, its curves are tagged, it approaches the
+// polyhedral result at least 2x per level, and the torus' pieces away from
+// the curves are certified one to one (regular regions), while the pairs at
+// the sphere's valence-5 vertices and the curves stay undecided.
+TEST(SubdivisionBoolean, SphereThroughATorus) {
+  const Mesh ring = torus(1.0, 0.35, 24, 12), ball = icosphere(1, {1.0, 0.05, 0.1}, 0.5);
+  double previous = std::numeric_limits<double>::infinity();
+  for (unsigned level = 1; level <= 2; ++level) {
+    for (Op op : {Op::union_of, Op::difference}) {
+      const auto r = subdivision_boolean(ring, ball, op, level);
+      ASSERT_TRUE(r.ok()) << to_string(op) << ": " << r.failure;
+      ASSERT_TRUE(r.polyhedral.validation.is_valid_solid()) << r.polyhedral.validation.summary();
+      EXPECT_GT(r.counts.curve_vertices, 10u);
+      expect_curves_tagged(r);
+      expect_valid_control_mesh(r);
+      EXPECT_EQ(r.validation.adjacent_pieces.status, Check_status::undecided);
+      EXPECT_GT(r.validation.certified_adjacent_pairs, r.validation.adjacent_pairs / 4) << r.validation.adjacent_pieces.note;
+      if (op != Op::union_of) continue;
+      const double d = r.distance_to_polyhedral.hausdorff();
+      ASSERT_TRUE(std::isfinite(d));
+      if (std::isfinite(previous)) {
+        EXPECT_LE(2 * d, previous) << "level " << level;
+      }
+      previous = d;
+    }
+  }
+}
+
 // A creased cube with a sphere: the cube's creases and corners survive
 // where the cube is kept, beside the curves.
 TEST(SubdivisionBoolean, CreasedCubeKeepsItsCreases) {

@@ -111,13 +111,18 @@ class Limit_embedding {
     auto& n = normals_[f];
     if (n) return *n;
     const Quartic_bezier_patch<Interval>& b = bezier(f);
+    // The cubic derivative nets, each coefficient times its multinomial:
+    // the product of two Bernstein polynomials is the sextic one times
+    // m(a) m(e) / m(a + e), and the positive divisor does not change signs.
     std::array<Point, 10> du, dv;
     int c = 0;
     for (int k = 0; k <= 3; ++k)
       for (int j = 0; j + k <= 3; ++j, ++c) {
         const Point& w = b[quartic_bezier_index(j, k)];
-        du[c] = difference(b[quartic_bezier_index(j + 1, k)], w);
-        dv[c] = difference(b[quartic_bezier_index(j, k + 1)], w);
+        const Interval m(double(cubic_multinomial[c]));
+        const Point u = difference(b[quartic_bezier_index(j + 1, k)], w), v = difference(b[quartic_bezier_index(j, k + 1)], w);
+        du[c] = {m * u.x, m * u.y, m * u.z};
+        dv[c] = {m * v.x, m * v.y, m * v.z};
       }
     std::array<Point, 28> s;
     s.fill(Point{Interval(0), Interval(0), Interval(0)});
@@ -126,9 +131,8 @@ class Limit_embedding {
         for (int k2 = 0, e = 0; k2 <= 3; ++k2)
           for (int j2 = 0; j2 + k2 <= 3; ++j2, ++e) {
             const int j = j1 + j2, k = k1 + k2, g = 7 * k - k * (k - 1) / 2 + j;  // sextic index
-            const Interval w(double(cubic_multinomial[a] * cubic_multinomial[e]));
             const Point x = cross(du[a], dv[e]);
-            s[g] = {s[g].x + w * x.x, s[g].y + w * x.y, s[g].z + w * x.z};
+            s[g] = {s[g].x + x.x, s[g].y + x.y, s[g].z + x.z};
           }
     n = s;
     return *n;

@@ -119,7 +119,7 @@ class Limit_embedding {
     for (int k = 0; k <= 3; ++k)
       for (int j = 0; j + k <= 3; ++j, ++c) {
         const Point& w = b[quartic_bezier_index(j, k)];
-        const Interval m(double(cubic_multinomial[c]));
+        const Interval m{static_cast<double>(cubic_multinomial[c])};
         const Point u = difference(b[quartic_bezier_index(j + 1, k)], w), v = difference(b[quartic_bezier_index(j, k + 1)], w);
         du[c] = {m * u.x, m * u.y, m * u.z};
         dv[c] = {m * v.x, m * v.y, m * v.z};

@@ -127,7 +127,8 @@ std::vector<Entry> catalogue() {
        [] { return read_error_unreadable("truncated.stl", {"announces 4 triangles but holds 3"}); }},
       // ---- garbage ----------------------------------------------------------------------
       {"garbage.obj", "no OBJ statement", [] { return read_error_unreadable("garbage.obj", {"cannot parse"}); }},
-      {"garbage.ply", "words where numbers belong", [] { return read_error_unreadable("garbage.ply", {"cannot parse"}); }},
+      {"garbage.ply", "words where numbers belong",
+       [] { return read_error_unreadable("garbage.ply", {"element 'vertex' item 0", "'zero' is not a number"}); }},
       {"garbage.stl", "60 bytes, no 'solid'",
        [] { return read_error_unreadable("garbage.stl", {"60 bytes, fewer than its 84-byte header"}); }},
       {"not_off_keyword.off", "MESH instead of OFF",
@@ -151,6 +152,10 @@ std::vector<Entry> catalogue() {
        [] { return read_error_unreadable("fuzz_ply_property_before_element.ply", {"header line 4", "property before any element"}); }},
       {"list_coordinate.ply", "a vertex coordinate declared as a list (found by fuzz/mesh_ply, reduced)",
        [] { return read_error_unreadable("list_coordinate.ply", {"header line 6", "vertex coordinate 'z' declared as a list"}); }},
+      {"misread_number.ply", "'1..0', which CGAL reads as two numbers, then 2^32 - 1 read as a list count (found by fuzz/mesh_ply, reduced)",
+       [] { return read_error_unreadable("misread_number.ply", {"element 'vertex' item 0", "'1..0' is not a finite decimal number"}); }},
+      {"signed_count_overflow.ply", "a list count of 200 in a signed 8-bit type (CGAL wraps it to -56)",
+       [] { return read_error_unreadable("signed_count_overflow.ply", {"element 'face' item 0", "list count '200' is not valid"}); }},
       // ---- indices ----------------------------------------------------------------------
       {"negative_index.off", "index -3",
        [] { return read_error_unreadable("negative_index.off", {"line 10", "corner 2 of face 3", "'-3'"}); }},

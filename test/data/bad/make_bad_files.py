@@ -75,6 +75,17 @@ def main():
     write("list_coordinate.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                                  "property list uchar float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                                  "end_header\n0 0 1 0\n1 0 1 0\n0 1 1 0\n3 0 1 2\n")
+    # a token CGAL's reader takes in two reads ("1..0" as "1." and ".0"): the
+    # stream falls out of step and reads the next number, 2^32 - 1, as a list
+    # count, which it allocates (found by fuzz/mesh_ply, reduced)
+    write("misread_number.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                                "property float z\nelement face 1\nproperty list uint int vertex_indices\n"
+                                "end_header\n1..0 0 4294967295\n1 0\n")
+    # a signed 8-bit list count of 200, which CGAL's reader wraps to -56 and
+    # then to a size_t near 2^64
+    write("signed_count_overflow.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                       "property float z\nelement face 1\nproperty list char int vertex_indices\n"
+                                       "end_header\n0 0 0\n1 0 0\n0 1 0\n200" + " 0" * 200 + "\n")
     # wrong counts
     write("wrong_counts_fewer.off", off(TETRA_V, TETRA_F, "OFF\n4 3 0\n"))   # 4 faces follow
     write("wrong_counts_more.ply", ply_binary(TETRA_V, TETRA_F, face_count=5))

@@ -14,9 +14,12 @@
 #pragma once
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -49,6 +52,7 @@ class Ply_check {
     int size = 0;        ///< bytes of a value (or of a list item)
     int count_size = 0;  ///< bytes of a list's count, 0 for a scalar
     bool count_signed = false;
+    bool is_signed = false, floating = false;  ///< of a value (or of a list item)
   };
   struct Element {
     std::string name;
@@ -125,23 +129,23 @@ class Ply_check {
         if (w.size() >= 2 && w[1] == "list") {
           if (w.size() < 5) fail_header("'property list COUNT_TYPE ITEM_TYPE NAME' expected");
           p.count_size = type_size(w[2], &p.count_signed);
-          p.size = type_size(w[3]);
+          p.size = type_size(w[3], &p.is_signed);
           if (p.count_size == 0 || p.count_size > 4 || w[2].find("float") != std::string_view::npos ||
               w[2] == "double")
             fail_header("list count type '" + std::string(w[2].substr(0, 40)) + "' is not an integer type");
           type = w[3], name = w[4];
         } else {
           if (w.size() < 3) fail_header("'property TYPE NAME' expected");
-          p.size = type_size(w[1]);
+          p.size = type_size(w[1], &p.is_signed);
           type = w[1], name = w[2];
         }
         if (p.size == 0) fail_header("unknown property type");
+        p.floating = type == "float" || type == "float32" || type == "double" || type == "float64";
         // CGAL's reader casts vertex coordinates to a float or double scalar
         // without checking (a null pointer for any other type, and for a
         // list; both found by fuzz/mesh_ply).
         const bool coordinate = elements_.back().name == "vertex" && (name == "x" || name == "y" || name == "z");
-        const bool floating = type == "float" || type == "float32" || type == "double" || type == "float64";
-        if (coordinate && (p.count_size != 0 || !floating))
+        if (coordinate && (p.count_size != 0 || !p.floating))
           fail_header("vertex coordinate '" + std::string(name) + "' declared as " +
                       (p.count_size != 0 ? std::string("a list") : "type '" + std::string(type.substr(0, 40)) + "'") +
                       ": a float or double scalar expected");
@@ -160,17 +164,18 @@ class Ply_check {
   void value(const Property& p, const Element& e, std::size_t item) {
     if (format_ == Format::ascii) {
       if (p.count_size == 0) {
-        if (!token()) fail_body(e, item, "the file ends early");
+        ascii_number(p, e, item);
         return;
       }
       std::string_view c;
       if (!token(&c)) fail_body(e, item, "the file ends early");
       std::size_t n = 0;
-      const std::size_t max = p.count_size == 1 ? 255 : p.count_size == 2 ? 65535 : 4294967295u;
+      // A signed count above its type's maximum wraps to a negative one in
+      // CGAL's reader, then to a huge size_t.
+      const std::size_t max = (std::size_t{1} << (8 * p.count_size - (p.count_signed ? 1 : 0))) - 1;
       if (!integer(c, n) || n > max) fail_body(e, item, "list count '" + std::string(c.substr(0, 40)) + "' is not valid");
       if (n > (text_.size() - pos_) / 2 + 1) fail_body(e, item, "list count " + std::to_string(n) + " exceeds the rest of the file");
-      for (std::size_t i = 0; i < n; ++i)
-        if (!token()) fail_body(e, item, "the file ends inside a list");
+      for (std::size_t i = 0; i < n; ++i) ascii_number(p, e, item);
       return;
     }
     if (p.count_size == 0) {
@@ -188,6 +193,40 @@ class Ply_check {
     if (n > (text_.size() - pos_) / static_cast<std::size_t>(p.size))
       fail_body(e, item, "list count " + std::to_string(n) + " exceeds the rest of the file");
     skip(static_cast<std::size_t>(n) * static_cast<std::size_t>(p.size), e, item);
+  }
+  /// Reads one ASCII value of p's (item) type and refuses it unless CGAL's
+  /// reader takes the same token whole and without a stream failure: a
+  /// failed or partial read leaves its stream out of step with the file, and
+  /// a later list count is then read as garbage (or 2^32 - 1) and allocated
+  /// (found by fuzz/mesh_ply: "1..0" read as "1." and ".0"). Integers:
+  /// optional sign and digits, in the range CGAL reads them with (short for
+  /// 8-bit types, as it widens them); floats: a decimal number, finite in
+  /// the type.
+  void ascii_number(const Property& p, const Element& e, std::size_t item) {
+    std::string_view t;
+    if (!token(&t)) fail_body(e, item, "the file ends early");
+    const auto bad = [&](const char* why) {
+      fail_body(e, item, "value '" + std::string(t.substr(0, 40)) + "' " + why);
+    };
+    std::string_view digits = t;
+    if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
+    if (digits.empty() || !(std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.'))
+      bad("is not a number");
+    if (digits[0] == '+' || digits[0] == '-') bad("is not a number");
+    if (p.floating) {
+      double v = 0;
+      const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+      if (ec != std::errc() || end != digits.data() + digits.size()) bad("is not a finite decimal number");
+      if (p.size == 4 && std::fabs(v) > double(std::numeric_limits<float>::max())) bad("overflows a float");
+      return;
+    }
+    if (!p.is_signed && t[0] == '-') bad("is negative for an unsigned type");
+    long long v = 0;
+    const auto [end, ec] = std::from_chars(t.data() + (t[0] == '+'), t.data() + t.size(), v);
+    if (ec != std::errc() || end != t.data() + t.size()) bad("is not an integer");
+    const int bytes = std::max(p.size, 2);  // 8-bit types are read as 16-bit ones
+    const long long hi = p.is_signed ? (1LL << (8 * bytes - 1)) - 1 : (1LL << (8 * bytes)) - 1;
+    if (v > hi || v < (p.is_signed ? -hi - 1 : 0)) bad("is out of the type's range");
   }
   void skip(std::size_t bytes, const Element& e, std::size_t item) {
     if (text_.size() - pos_ < bytes) fail_body(e, item, "the file ends early");

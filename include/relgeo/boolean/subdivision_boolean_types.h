@@ -52,8 +52,9 @@ struct Subdivision_validation_options {
 /// along common boundaries or come close: a pair is certified to meet only
 /// where its faces meet when the limit surface over the influence region of
 /// a shared control point (the faces whose limit depends on it) is certified
-/// one to one, from the quartic Bezier nets of its patches (the thesis'
-/// Bezier criteria, Sec. 5.4.2; method in boolean/internal/limit_embedding.h).
+/// one to one, from the quartic Bezier nets of its patches (where the
+/// thesis, Sec. 5.4.2, puts its Bezier criteria; method and argument in
+/// boolean/internal/limit_embedding.h).
 /// That needs regular patches: regions around an extraordinary vertex or an
 /// irregular crease vertex stay undecided, and so do the pairs and pieces no
 /// certified region holds (listed in `adjacent_pieces`). A report is

@@ -31,11 +31,13 @@
 // the certificate holds for the exact surface; what it cannot show (a region
 // with an irregular patch: extraordinary vertex or irregular crease vertex;
 // a region that is not a disc; a sign left uncertain) is reported, never
-// assumed. This is the Bezier hull criterion of the thesis (Sec. 5.4.2: for
-// regular patches the Bezier coefficients are explicit) applied to the union
-// of the patches around a control point, with the supplementary condition
-// that the union is one to one along its common boundaries (here: through
-// the degree argument, which needs no separate test).
+// assumed. It stands where the thesis (Sec. 5.4.2) puts the Bezier
+// convex-hull criteria of its reference [30] (Crit. 3.2.1*, 3.2.2*): it uses
+// the explicit Bezier coefficients of regular patches, applies to the union
+// of the patches around a point as [28] does, and its degree argument covers
+// the supplementary condition of [29] (one to one along the common
+// boundaries). [30]'s criteria themselves are not reproduced (the paper was
+// not at hand); this certificate and its argument are derived here.
 #pragma once
 
 #include <algorithm>

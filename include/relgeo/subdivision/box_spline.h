@@ -57,6 +57,9 @@ inline constexpr std::array<std::array<int, 3>, 15> quartic_bezier_powers{
 constexpr int quartic_bezier_index(int j, int k) { return 5 * k - k * (k - 1) / 2 + j; }
 /// Index of the cubic Bezier coefficient with powers (3 - j - k, j, k).
 constexpr int cubic_bezier_index(int j, int k) { return 4 * k - k * (k - 1) / 2 + j; }
+/// Multinomial 3! / (i! j! k!) of each cubic Bernstein polynomial, in
+/// cubic_bezier_index order.
+inline constexpr int cubic_multinomial[10] = {1, 3, 3, 1, 3, 6, 3, 3, 3, 1};
 
 /// Bezier coefficient c (quartic_bezier_powers order) of the regular patch =
 /// sum_i loop_patch_bezier_x24[c][i] p_i / 24 (rows sum to 24).
@@ -165,14 +168,13 @@ std::array<FT, 15> quartic_bernstein(const FT& w, const FT& u, const FT& v) {
 /// The 10 cubic Bernstein values (order cubic_bezier_index).
 template <class FT>
 std::array<FT, 10> cubic_bernstein(const FT& w, const FT& u, const FT& v) {
-  static constexpr int multinomial[10] = {1, 3, 3, 1, 3, 6, 3, 3, 3, 1};
   std::array<FT, 4> pw, pu, pv;
   pw[0] = pu[0] = pv[0] = FT(1);
   for (int i = 1; i < 4; ++i) pw[i] = FT(pw[i - 1] * w), pu[i] = FT(pu[i - 1] * u), pv[i] = FT(pv[i - 1] * v);
   std::array<FT, 10> b;
   int c = 0;
   for (int k = 0; k <= 3; ++k)
-    for (int j = 0; j + k <= 3; ++j, ++c) b[c] = FT(FT(FT(multinomial[c]) * pw[3 - j - k]) * FT(pu[j] * pv[k]));
+    for (int j = 0; j + k <= 3; ++j, ++c) b[c] = FT(FT(FT(cubic_multinomial[c]) * pw[3 - j - k]) * FT(pu[j] * pv[k]));
   return b;
 }
 

@@ -52,6 +52,7 @@
 #include "relgeo/kernel/interval_kernel.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/subdivision/box_spline.h"
+#include "relgeo/subdivision/internal/point_algebra.h"
 #include "relgeo/subdivision/limit_evaluation.h"
 
 namespace relgeo::internal {
@@ -64,9 +65,6 @@ enum class Region_verdict : std::uint8_t {
   jacobian,          ///< a patch's projected Jacobian not certified positive
   boundary,          ///< the boundary not certified star-shaped around the centre
 };
-
-/// Multinomial coefficient 3! / (i! j! k!) of a cubic Bernstein index.
-inline constexpr int cubic_multinomial[10] = {1, 3, 3, 1, 3, 6, 3, 3, 3, 1};
 
 class Limit_embedding {
  public:
@@ -93,11 +91,6 @@ class Limit_embedding {
   using P2 = std::array<Interval, 2>;
 
   static Interval det(const P2& a, const P2& b) { return a[0] * b[1] - a[1] * b[0]; }
-  static Point difference(const Point& a, const Point& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-  static Point cross(const Point& a, const Point& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-  }
-  static Interval dot(const Point& a, const Point& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
   // The Bezier net of a regular patch, computed once.
   const Quartic_bezier_patch<Interval>& bezier(Index f) {
@@ -122,7 +115,8 @@ class Limit_embedding {
       for (int j = 0; j + k <= 3; ++j, ++c) {
         const Point& w = b[quartic_bezier_index(j, k)];
         const Interval m{static_cast<double>(cubic_multinomial[c])};
-        const Point u = difference(b[quartic_bezier_index(j + 1, k)], w), v = difference(b[quartic_bezier_index(j, k + 1)], w);
+        const Point u = point_difference(b[quartic_bezier_index(j + 1, k)], w);
+        const Point v = point_difference(b[quartic_bezier_index(j, k + 1)], w);
         du[c] = {m * u.x, m * u.y, m * u.z};
         dv[c] = {m * v.x, m * v.y, m * v.z};
       }
@@ -133,7 +127,7 @@ class Limit_embedding {
         for (int k2 = 0, e = 0; k2 <= 3; ++k2)
           for (int j2 = 0; j2 + k2 <= 3; ++j2, ++e) {
             const int j = j1 + j2, k = k1 + k2, g = 7 * k - k * (k - 1) / 2 + j;  // sextic index
-            const Point x = cross(du[a], dv[e]);
+            const Point x = point_cross(du[a], dv[e]);
             s[g] = {s[g].x + x.x, s[g].y + x.y, s[g].z + x.z};
           }
     n = s;
@@ -197,11 +191,11 @@ class Limit_embedding {
     const std::array<double, 3> e2{d[1] * e1[2] - d[2] * e1[1], d[2] * e1[0] - d[0] * e1[2], d[0] * e1[1] - d[1] * e1[0]};
     const Point E1{Interval(e1[0]), Interval(e1[1]), Interval(e1[2])}, E2{Interval(e2[0]), Interval(e2[1]), Interval(e2[2])};
     // det(P a, P b) = (e1 x e2) . (a x b): the normal of the projection.
-    const Point normal = cross(E1, E2);
+    const Point normal = point_cross(E1, E2);
     for (Index f : faces)
       for (const Point& n : jacobian_normals(f))
-        if (!(dot(normal, n).inf() > 0)) return Region_verdict::jacobian;
-    const auto project = [&](const Point& p) { return P2{dot(E1, p), dot(E2, p)}; };
+        if (!(point_dot(normal, n).inf() > 0)) return Region_verdict::jacobian;
+    const auto project = [&](const Point& p) { return P2{point_dot(E1, p), point_dot(E2, p)}; };
     // The centre: b's limit point (a Bezier corner), rounded to a double point.
     const Index hb = t.vertex_halfedge(b);
     const P2 centre_enclosure = project(bezier(Mesh_topology::face(hb))[corner_index(hb % 3)]);

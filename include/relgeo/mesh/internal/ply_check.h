@@ -212,7 +212,6 @@ class Ply_check {
     if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
     if (digits.empty() || !(std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.'))
       bad("is not a number");
-    if (digits[0] == '+' || digits[0] == '-') bad("is not a number");
     if (p.floating) {
       double v = 0;
       const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);

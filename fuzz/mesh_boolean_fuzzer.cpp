@@ -75,8 +75,9 @@ Mesh_d moved(const Mesh_d& m, Input& in) {
 
 mpq_class exact_volume(const Boolean_result<Exact_kernel>& r) {
   mpq_class v = 0;
+  const auto vertices = r.exact_vertices();
   for (const Triangle& f : r.mesh.faces) {
-    const auto &a = r.exact_vertices[f[0]].point, &b = r.exact_vertices[f[1]].point, &c = r.exact_vertices[f[2]].point;
+    const auto &a = vertices[f[0]].point, &b = vertices[f[1]].point, &c = vertices[f[2]].point;
     v += a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
   }
   return v;
@@ -119,7 +120,7 @@ void check_exact(const Mesh_d& a, const Mesh_d& b) {
   for (const auto* r : {&u, &i, &d}) {
     Triangle_mesh<Point_3<mpq_class>> exact;
     exact.faces = r->mesh.faces;
-    for (const auto& v : r->exact_vertices) exact.vertices.push_back(v.point);
+    for (const auto& v : r->exact_vertices()) exact.vertices.push_back(v.point);
     require(find_self_intersections<Exact_kernel>(exact).pairs.empty(), "the exact result crosses itself");
     require(balanced_directed_edges(r->mesh), "the exact result is not a closed oriented surface");
   }

@@ -127,10 +127,15 @@ struct Boolean_result {
   /// Face pairs the kernel could not decide (fail-safe and interval kernels).
   std::vector<std::pair<Index, Index>> undecided_pairs;
   /// The output mesh in doubles (each vertex the nearest the kernel can
-  /// give), the intersection curves tagged as creases.
+  /// give), the intersection curves tagged as creases. Its vertices are the
+  /// input vertices it keeps (exactly), then from `first_new_vertex` on the
+  /// new ones (intersection points, rounded).
   Triangle_mesh<Point_3<double>> mesh;
-  /// The output vertices as the kernel's points: exact under exact kernels.
-  std::vector<typename K::Implicit_point_3> exact_vertices;
+  /// The index of the first new output vertex.
+  Index first_new_vertex = 0;
+  /// The new output vertices as the kernel's points (exact under exact
+  /// kernels): new_vertex_points[j] is output vertex first_new_vertex + j.
+  std::vector<typename K::Implicit_point_3> new_vertex_points;
   /// The largest error of a rounded output coordinate (0 when every vertex is
   /// an input vertex; infinite when the kernel cannot bound it).
   double rounding_error = 0;
@@ -149,6 +154,23 @@ struct Boolean_result {
   Solid_report validation;
 
   bool ok() const { return status == Status::ok; }
+  /// Output vertex i as the kernel's point: exact under exact kernels (an
+  /// input vertex is its own coordinates, a new one its implicit point).
+  typename K::Implicit_point_3 exact_vertex(Index i) const {
+    if (i >= first_new_vertex) return new_vertex_points[i - first_new_vertex];
+    const Point_3<double>& v = mesh.vertices[i];
+    // The kernels' constructions are stateless function objects.
+    using Make_point = decltype(std::declval<const K&>().construct_point_3_object());
+    using Make_implicit = decltype(std::declval<const K&>().construct_implicit_point_3_object());
+    return Make_implicit{}(Make_point{}(v.x, v.y, v.z));
+  }
+  /// Every output vertex as the kernel's point (exact_vertex of each).
+  std::vector<typename K::Implicit_point_3> exact_vertices() const {
+    std::vector<typename K::Implicit_point_3> v;
+    v.reserve(mesh.vertices.size());
+    for (Index i = 0; i < mesh.vertices.size(); ++i) v.push_back(exact_vertex(i));
+    return v;
+  }
 };
 
 }  // namespace relgeo

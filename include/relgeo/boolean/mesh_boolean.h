@@ -41,6 +41,7 @@
 #include "relgeo/boolean/boolean_types.h"
 #include "relgeo/boolean/internal/face_triangulation.h"
 #include "relgeo/boolean/internal/labelling.h"
+#include "relgeo/boolean/internal/point_table.h"
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
@@ -62,7 +63,7 @@ class Boolean_engine {
   using Result = Boolean_result<K>;
 
   Boolean_engine(const Mesh& a, const Mesh& b, Boolean_operation op, const K& k, const Boolean_options& o)
-      : mesh_{&a, &b}, op_(op), k_(k), options_(o) {}
+      : mesh_{&a, &b}, op_(op), k_(k), options_(o), points_(k, mesh_) {}
 
   Result run() {
     Result r;
@@ -72,7 +73,7 @@ class Boolean_engine {
       check_operand(1, "B");
     }
     r.time.check = clock.lap();
-    load_points();
+    number_points();
     for (int m = 0; m < 2; ++m)
       if (!bvh_[m]) bvh_[m].emplace(*mesh_[m], Face_bvh_options{.threads = options_.threads});
     const std::vector<Face_pair> pairs = bvh_[0]->overlapping_pairs(*bvh_[1], options_.threads);
@@ -139,19 +140,11 @@ class Boolean_engine {
     return t;
   }
 
-  // Global points: A's vertices, then B's, then the new ones.
-  void load_points() {
-    const auto p = k_.construct_point_3_object();
-    const auto make = k_.construct_implicit_point_3_object();
+  // Global points: A's vertices, then B's, then the new ones (points_ makes
+  // an input vertex the kernel's point when a phase first reads it).
+  void number_points() {
     offset_[0] = 0;
     offset_[1] = static_cast<Index>(mesh_[0]->vertices.size());
-    // Room for new points too (a few percent of the operands' vertices in
-    // practice; pages not written are not resident), so that they are
-    // rarely copied.
-    const std::size_t n = mesh_[0]->vertices.size() + mesh_[1]->vertices.size();
-    points_.reserve(n + n / 4 + 1024);
-    for (int m = 0; m < 2; ++m)
-      for (const auto& v : mesh_[m]->vertices) points_.push_back(make(p(v.x, v.y, v.z)));
     parent_.resize(points_.size());
     std::iota(parent_.begin(), parent_.end(), Index{0});
   }
@@ -208,7 +201,7 @@ class Boolean_engine {
       return false;
     }
     merge_equal_points();
-    for (Index p = offset_[1] + static_cast<Index>(mesh_[1]->vertices.size()); p < points_.size(); ++p)
+    for (Index p = points_.input_count(); p < points_.size(); ++p)
       r.counts.new_vertices += find(p) == p;
     return true;
   }
@@ -230,8 +223,7 @@ class Boolean_engine {
       }
     }
     if (id == invalid_index) {
-      id = static_cast<Index>(points_.size());
-      points_.push_back(p);
+      id = points_.add(p);
       parent_.push_back(id);
     }
     located_.push_back({id, {fa, fb}, {where[0], where[1]}});
@@ -333,7 +325,7 @@ class Boolean_engine {
       constraints(1, s.fb).segments.push_back({a, b});
     }
     curves_.finish(points_.size());
-    Face_triangulator<K> triangulator(k_, points_);
+    Face_triangulator<K, Point_table<K>> triangulator(k_, points_);
     for (int m = 0; m < 2; ++m) {
       const Mesh& mesh = *mesh_[m];
       pieces_[m].piece_of_face.assign(mesh.faces.size(), invalid_index);
@@ -568,20 +560,25 @@ class Boolean_engine {
   }
 
   void assemble(Result& r) {
+    // Output vertices: the input vertices kept, then the new ones (so that
+    // only the new ones need the kernel's points), each numbered on first use.
     std::vector<Index> new_index(points_.size(), invalid_index);
+    const Index inputs = points_.input_count();
+    Index next_input = 0, next_new = 0;
     const auto approximate = k_.approximate_point_3_object();
     const auto use = [&](Index g) {
       Index& n = new_index[g];
       if (n == invalid_index) {
-        n = static_cast<Index>(r.exact_vertices.size());
-        r.exact_vertices.push_back(points_[g]);
-        if (g < offset_[1] + mesh_[1]->vertices.size()) {
+        if (g < inputs) {
+          n = next_input++;
           const int m = g < offset_[1] ? 0 : 1;
-          r.mesh.vertices.push_back(mesh_[m]->vertices[g - offset_[m]]);
+          r.mesh.vertices[n] = mesh_[m]->vertices[g - offset_[m]];
         } else {
+          n = r.first_new_vertex + next_new++;
           const Approximate_point_3 a = approximate(points_[g]);
-          r.mesh.vertices.push_back(a.point);
+          r.mesh.vertices[n] = a.point;
           r.rounding_error = std::max(r.rounding_error, a.error);
+          r.new_vertex_points.push_back(points_[g]);
         }
       }
       return n;
@@ -589,7 +586,7 @@ class Boolean_engine {
     // The output's sizes first, so that its arrays are allocated once (no
     // copy on growth: the copies were the peak of the run's memory).
     {
-      std::size_t faces = 0, vertices = 0;
+      std::size_t faces = 0, new_vertices = 0;
       std::vector<char> used(points_.size(), 0);
       for (int m = 0; m < 2; ++m)
         for (Index t = 0; t < pieces_[m].triangles.size(); ++t) {
@@ -597,10 +594,10 @@ class Boolean_engine {
           if (!keeps(m, labels_[m][t], flip)) continue;
           ++faces;
           for (Index g : pieces_[m].triangles[t])
-            if (!used[g]) used[g] = 1, ++vertices;
+            if (!used[g]) used[g] = 1, g < inputs ? ++r.first_new_vertex : ++new_vertices;
         }
       r.mesh.faces.reserve(faces), r.provenance.reserve(faces);
-      r.mesh.vertices.reserve(vertices), r.exact_vertices.reserve(vertices);
+      r.mesh.vertices.resize(r.first_new_vertex + new_vertices), r.new_vertex_points.reserve(new_vertices);
     }
     // The curves that are edges of the output are its creases.
     std::vector<Edge> creases;
@@ -659,7 +656,7 @@ class Boolean_engine {
   const K& k_;
   Boolean_options options_;
   std::array<Index, 2> offset_{};
-  std::vector<IP> points_;
+  Point_table<K> points_;
   std::vector<Index> parent_;
   std::vector<Located_point> located_;
   std::unordered_map<Cell_pair, Index, Cell_pair_hash> point_of_cells_;
@@ -681,7 +678,7 @@ concept Runs_on_filtered_exact_kernel =
 /// The result of the filtered exact kernel as a result of kernel K over
 /// rationals: the same faces, the vertices as K's exact points.
 template <class K>
-Boolean_result<K> with_exact_vertices(Boolean_result<Filtered_exact_kernel>&& r) {
+Boolean_result<K> with_exact_points(Boolean_result<Filtered_exact_kernel>&& r) {
   Boolean_result<K> out;
   out.status = r.status == Boolean_result<Filtered_exact_kernel>::Status::ok ? Boolean_result<K>::Status::ok
                                                                             : Boolean_result<K>::Status::failed;
@@ -696,9 +693,11 @@ Boolean_result<K> with_exact_vertices(Boolean_result<Filtered_exact_kernel>&& r)
   out.counts = r.counts;
   out.time = r.time;
   out.validation = std::move(r.validation);
-  for (const auto& v : r.exact_vertices) {
+  out.first_new_vertex = r.first_new_vertex;
+  out.new_vertex_points.reserve(r.new_vertex_points.size());
+  for (const auto& v : r.new_vertex_points) {
     const auto c = Staged_implicit_policy::exact_coordinates(v);
-    out.exact_vertices.push_back({Point_3<mpq_class>{c[0], c[1], c[2]}, v.kind});
+    out.new_vertex_points.push_back({Point_3<mpq_class>{c[0], c[1], c[2]}, v.kind});
   }
   return out;
 }
@@ -710,7 +709,7 @@ Boolean_result<K> with_exact_vertices(Boolean_result<Filtered_exact_kernel>&& r)
 ///
 /// Requires an IntersectionKernel_3. Exact under kernels with exact
 /// predicates (Filtered_exact_kernel, the default, and Exact_kernel): the
-/// result's exact_vertices are the exact points, its mesh their nearest
+/// result's exact_vertex(i) are the exact points, its mesh their nearest
 /// doubles (rounding_error says how far; rounding can in rare cases make the
 /// rounded mesh self-intersect: validate it). Fail-safe and interval kernels
 /// give the same result or a failure naming the face pairs they cannot
@@ -723,7 +722,7 @@ Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangl
                           Boolean_operation op, const K& k = K{}, const Boolean_options& options = {}) {
   if constexpr (internal::Runs_on_filtered_exact_kernel<K>) {
     if (options.use_double_point_kernel)
-      return internal::with_exact_vertices<K>(
+      return internal::with_exact_points<K>(
           internal::Boolean_engine<Filtered_exact_kernel>(a, b, op, Filtered_exact_kernel{}, options).run());
   }
   return internal::Boolean_engine<K>(a, b, op, k, options).run();

@@ -50,12 +50,14 @@ struct Face_triangulation {
   std::string failure;
 };
 
-template <class K>
+/// Points: the Boolean's points, K's implicit points by global index
+/// (points[i] for an Index i).
+template <class K, class Points>
 class Face_triangulator {
  public:
   using IP = typename K::Implicit_point_3;
 
-  Face_triangulator(const K& k, const std::vector<IP>& points)
+  Face_triangulator(const K& k, const Points& points)
       : points_(points), orient2_(k.implicit_orientation_2_object()), compare_(k.compare_xyz_3_object()) {}
 
   Face_triangulation run(const Face_constraints& f, int axis) {
@@ -364,7 +366,7 @@ class Face_triangulator {
     return false;
   }
 
-  const std::vector<IP>& points_;
+  const Points& points_;
   typename K::Implicit_orientation_2 orient2_;
   typename K::Compare_xyz_3 compare_;
   int axis_ = 2;

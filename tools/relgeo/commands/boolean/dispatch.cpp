@@ -45,11 +45,11 @@ Boolean_run evaluate_boolean(const std::string& kernel, const Mesh_double& a, co
     // Exact kernels whose implicit points are exact points (Exact_kernel,
     // Epeck): the result before rounding, tested for self-intersections.
     if constexpr (K::has_exact_constructions &&
-                  requires { { r.exact_vertices[0].point } -> std::convertible_to<typename K::Point_3>; }) {
+                  requires { { r.exact_vertex(0).point } -> std::convertible_to<typename K::Point_3>; }) {
       if (r.ok()) {
         Triangle_mesh<typename K::Point_3> exact;
         exact.faces = r.mesh.faces;
-        for (const auto& v : r.exact_vertices) exact.vertices.push_back(v.point);
+        for (const auto& v : r.exact_vertices()) exact.vertices.push_back(v.point);
         run.exact_self_intersecting_pairs = find_self_intersections<K>(exact).pairs.size();
       }
     }

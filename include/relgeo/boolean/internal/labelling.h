@@ -77,27 +77,44 @@ class Piece_adjacency {
           }
         }
         const Triangle& tri = p.triangles[t];
-        matched_.push_back({key(tri[i], tri[(i + 1) % 3]), 3 * t + i});
+        matched_.push_back({edge_key(tri[i], tri[(i + 1) % 3]), std::uint64_t{3 * t + i} << 1 | (tri[i] > tri[(i + 1) % 3])});
       }
     }
+    // Sorted by undirected edge, the two half-edges of an edge are
+    // neighbours: one pass pairs them (no search per half-edge).
     std::sort(matched_.begin(), matched_.end());
-    for (std::size_t j = 1; j < matched_.size(); ++j)
-      if (matched_[j].first == matched_[j - 1].first) return false;
-    for (const auto& [k, h] : matched_) opposite_[h] = find(static_cast<Index>(k & 0xFFFFFFFFu), static_cast<Index>(k >> 32));
+    for (std::size_t j = 0; j < matched_.size();) {
+      std::size_t e = j + 1;
+      while (e < matched_.size() && matched_[e].first == matched_[j].first) ++e;
+      if (e - j > 2 || (e - j == 2 && (matched_[j].second & 1) == (matched_[j + 1].second & 1))) return false;
+      if (e - j == 2) {
+        const auto h = static_cast<Index>(matched_[j].second >> 1), o = static_cast<Index>(matched_[j + 1].second >> 1);
+        opposite_[h] = o, opposite_[o] = h;
+      }
+      j = e;
+    }
     return true;
   }
   Index opposite(Index h) const { return opposite_[h]; }
   /// The half-edge u -> w of a piece on a split face or next to one
   /// (every curve edge), invalid_index when there is none.
   Index find(Index u, Index w) const {
-    const auto it = std::lower_bound(matched_.begin(), matched_.end(), std::pair{key(u, w), Index{0}});
-    return it != matched_.end() && it->first == key(u, w) ? it->second : invalid_index;
+    const std::uint64_t k = edge_key(u, w);
+    const std::uint64_t backward = u > w;
+    for (auto it = std::lower_bound(matched_.begin(), matched_.end(), std::pair{k, std::uint64_t{0}});
+         it != matched_.end() && it->first == k; ++it)
+      if ((it->second & 1) == backward) return static_cast<Index>(it->second >> 1);
+    return invalid_index;
   }
 
  private:
-  static std::uint64_t key(Index u, Index w) { return (std::uint64_t{u} << 32) | w; }
+  static std::uint64_t edge_key(Index u, Index w) {
+    return (std::uint64_t{std::min(u, w)} << 32) | std::max(u, w);
+  }
   std::vector<Index> opposite_;
-  std::vector<std::pair<std::uint64_t, Index>> matched_;  // (source, target) -> half-edge, sorted
+  // Half-edges not matched through the operand: (undirected edge, half-edge
+  // << 1 | 1 when it runs from the larger end), sorted.
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> matched_;
 };
 
 /// Set of undirected edges (the intersection curves) between points

@@ -65,14 +65,26 @@ NT dot(const Point_3<NT>& a, const Point_3<NT>& b) {
   return NT(NT(NT(a.x * b.x) + NT(a.y * b.y)) + NT(a.z * b.z));
 }
 
+/// The parts of the LPI point of the line through p, q and the plane
+/// through r, s, t: the direction a = q - p, W and lambda (see above).
+template <class NT>
+struct Lpi_parts {
+  Point_3<NT> a;
+  NT w, lambda;
+};
+template <class NT>
+Lpi_parts<NT> lpi_parts(const Point_3<NT>& p, const Point_3<NT>& q, const Point_3<NT>& r, const Point_3<NT>& s,
+                        const Point_3<NT>& t) {
+  const Point_3<NT> n = cross(difference(s, r), difference(t, r));
+  // Each part built in place (q - p formed twice: cheaper than a copy).
+  return {difference(q, p), dot(n, difference(q, p)), dot(n, difference(r, p))};
+}
+
 /// The LPI point of the line through p, q and the plane through r, s, t.
 template <class NT>
 Homogeneous_3<NT> lpi_coordinates(const Point_3<NT>& p, const Point_3<NT>& q, const Point_3<NT>& r,
                                   const Point_3<NT>& s, const Point_3<NT>& t) {
-  const Point_3<NT> a = difference(q, p);
-  const Point_3<NT> n = cross(difference(s, r), difference(t, r));
-  const NT w = dot(n, a);
-  const NT lambda = dot(n, difference(r, p));
+  const auto [a, w, lambda] = lpi_parts(p, q, r, s, t);
   return {NT(NT(w * p.x) + NT(lambda * a.x)), NT(NT(w * p.y) + NT(lambda * a.y)),
           NT(NT(w * p.z) + NT(lambda * a.z)), w, false};
 }

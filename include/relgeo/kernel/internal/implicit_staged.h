@@ -224,6 +224,8 @@ struct Staged_implicit_policy {
       };
       const Approximate_point_3 fast = approximate_from_enclosure(a.filter);
       if (close(fast)) return fast;
+      if (a.kind == Implicit_point_kind::lpi)
+        if (const Approximate_point_3 on_line = approximate_lpi_on_its_line(a); close(on_line)) return on_line;
       const Approximate_point_3 interval = approximate_from_enclosure(
           homogeneous_coordinates<Interval>(a, [](double v) { return Interval(v); }));
       if (close(interval)) return interval;
@@ -242,6 +244,24 @@ struct Staged_implicit_policy {
   }
 
  private:
+  // An LPI point as p + (lambda / W) (q - p) in intervals. Its enclosure is
+  // an ulp or two of the point wide when the step from p is short against
+  // the coordinates (an edge of a mesh against its position), where the
+  // quotients X / W of the homogeneous form carry the relative error of a
+  // degree-4 polynomial and are rarely close enough.
+  static Approximate_point_3 approximate_lpi_on_its_line(const Point& a) {
+    std::array<Point_3<Interval>, 5> v;
+    for (int i = 0; i < 5; ++i) {
+      const Point_3<double> d = a.primitive(i);
+      v[i] = {Interval(d.x), Interval(d.y), Interval(d.z)};
+    }
+    const auto [direction, w, lambda] = lpi_parts(v[0], v[1], v[2], v[3], v[4]);
+    if (!(w.inf() > 0 || w.sup() < 0)) return {};
+    const Interval step = lambda / w;
+    return approximate_from_enclosure(Homogeneous_3<Interval>{v[0].x + step * direction.x,
+                                                              v[0].y + step * direction.y,
+                                                              v[0].z + step * direction.z, Interval(1.0), true});
+  }
   // X, Y, Z, W exact in expansions, each enclosed by the outward-rounded sum
   // of its components (a few ulps wide), divided in intervals. The inputs
   // were scaled by 2^shift, and so was X / W: the scaling is undone when

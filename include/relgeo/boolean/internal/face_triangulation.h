@@ -185,10 +185,10 @@ class Face_triangulator {
       if (!t.alive) continue;
       std::array<Certified_sign, 3> s;
       bool outside = false;
-      for (int k = 0; k < 3; ++k) {
+      for (int k = 0; k < 3 && !outside; ++k) {
         s[k] = orient(t.v[k], t.v[(k + 1) % 3], p);
         if (!is_certain(s[k])) return failed("undecided location of a point in a face");
-        outside = outside || s[k] == Certified_sign::negative;
+        outside = s[k] == Certified_sign::negative;
       }
       if (outside) continue;
       const int zeros = (s[0] == Certified_sign::zero) + (s[1] == Certified_sign::zero) + (s[2] == Certified_sign::zero);
@@ -221,11 +221,15 @@ class Face_triangulator {
 
   bool insert_segment(int a, int b) {
     if (a == b) return true;
-    // Points of the face on the segment cut it (collinear and strictly between).
+    // Points of the face on the segment cut it (collinear and strictly
+    // between). The side of every point is kept: an edge crosses ab only if
+    // its ends lie on opposite sides.
+    side_.assign(global_.size(), Certified_sign::zero);
     for (int p = 0; p < static_cast<int>(global_.size()); ++p) {
       if (p == a || p == b) continue;
       const Certified_sign o = orient(a, b, p);
       if (!is_certain(o)) return failed("undecided position of a point against a segment");
+      side_[p] = o;
       if (o != Certified_sign::zero || !strictly_between(a, b, p)) continue;
       return insert_segment(a, p) && insert_segment(p, b);
     }
@@ -290,16 +294,17 @@ class Face_triangulator {
     return is_certain(ap) && ap != Certified_sign::zero && ap == pb;
   }
 
-  // 1 if segment xy crosses segment ab in both interiors, 0 if not, -1 undecided.
+  // 1 if segment xy crosses segment ab in both interiors, 0 if not, -1
+  // undecided; the sides of x and y against ab are side_'s.
   int crosses(int a, int b, int x, int y) {
     if (x == a || x == b || y == a || y == b) return 0;
-    const Certified_sign sx = orient(a, b, x), sy = orient(a, b, y);
+    if (side_[x] * side_[y] != Certified_sign::negative) return 0;
     const Certified_sign sa = orient(x, y, a), sb = orient(x, y, b);
-    if (!is_certain(sx) || !is_certain(sy) || !is_certain(sa) || !is_certain(sb)) {
+    if (!is_certain(sa) || !is_certain(sb)) {
       failed("undecided crossing of a constraint");
       return -1;
     }
-    return sx * sy == Certified_sign::negative && sa * sb == Certified_sign::negative ? 1 : 0;
+    return sa * sb == Certified_sign::negative ? 1 : 0;
   }
 
   // Flips the edge k of triangle ti when its quadrilateral is strictly convex:
@@ -372,6 +377,7 @@ class Face_triangulator {
   int axis_ = 2;
   Certified_sign sigma_ = Certified_sign::zero;
   std::vector<Index> global_;
+  std::vector<Certified_sign> side_;  // of each point against the segment being inserted
   std::vector<Tri> tris_;
   std::vector<std::array<int, 2>> constrained_;
   std::string failure_;

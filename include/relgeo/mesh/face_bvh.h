@@ -164,13 +164,23 @@ class Face_bvh {
 
   /// From one box per face. \throws Precondition_violation when a box is
   /// empty or not finite (NaN, infinite). Complexity O(n log n).
-  explicit Face_bvh(std::span<const Box_3> boxes, const Face_bvh_options& options = {}) { build(boxes, options); }
+  explicit Face_bvh(std::span<const Box_3> boxes, const Face_bvh_options& options = {}) {
+    build_tree(boxes, options);
+    boxes_.resize(size_);
+    for (std::size_t i = 0; i < size_; ++i) boxes_[i] = boxes[faces_[i]];
+    form_node_boxes();
+  }
   /// From the boxes of the mesh's faces (face_boxes: throws Invalid_mesh for
   /// bad indices or non-finite coordinates).
   template <class P>
   explicit Face_bvh(const Triangle_mesh<P>& m, const Face_bvh_options& options = {}) {
-    const std::vector<Box_3> boxes = face_boxes(m);
-    build(boxes, options);
+    std::vector<Box_3> boxes = face_boxes(m);
+    build_tree(boxes, options);
+    // The boxes put in leaf order where they are: one array of them at a
+    // time (peak memory).
+    gather_in_place(boxes);
+    boxes_ = std::move(boxes);
+    form_node_boxes();
   }
 
   /// Number of faces.
@@ -298,7 +308,8 @@ class Face_bvh {
 
   // ---- build ----------------------------------------------------------------
 
-  void build(std::span<const Box_3> boxes, const Face_bvh_options& o) {
+  // Everything but the boxes in leaf order (boxes_) and the nodes' boxes.
+  void build_tree(std::span<const Box_3> boxes, const Face_bvh_options& o) {
     const std::size_t n = boxes.size();
     if (n >= invalid_index / 2) throw Invalid_input("Face_bvh: too many faces for 32-bit indices");
     for (std::size_t f = 0; f < n; ++f) {
@@ -332,10 +343,30 @@ class Face_bvh {
     }
     size_ = n;
     node_count_ = next.load();
-    boxes_ = std::make_unique_for_overwrite<Box_3[]>(n);
-    for (std::size_t i = 0; i < n; ++i) boxes_[i] = boxes[faces_[i]];
-    // Children are allocated after their parent: one backward pass forms
-    // every box from its children's.
+  }
+  // boxes[i] := boxes[faces_[i]] for every slot i, following the cycles of
+  // the permutation.
+  void gather_in_place(std::vector<Box_3>& boxes) const {
+    std::vector<bool> done(size_, false);
+    for (std::size_t start = 0; start < size_; ++start) {
+      if (done[start]) continue;
+      const Box_3 first = boxes[start];
+      std::size_t i = start;
+      for (;;) {
+        done[i] = true;
+        const std::size_t from = faces_[i];
+        if (from == start) {
+          boxes[i] = first;
+          break;
+        }
+        boxes[i] = boxes[from];
+        i = from;
+      }
+    }
+  }
+  // Children are allocated after their parent: one backward pass forms
+  // every box from its children's.
+  void form_node_boxes() {
     for (std::size_t i = node_count_; i-- > 0;) {
       Node& node = nodes_[i];
       if (node.is_leaf()) {
@@ -667,7 +698,7 @@ class Face_bvh {
   }
 
   std::unique_ptr<Node[]> nodes_;
-  std::unique_ptr<Box_3[]> boxes_;  // in leaf order
+  std::vector<Box_3> boxes_;  // in leaf order
   std::unique_ptr<Index[]> faces_;  // face of each slot
   std::size_t size_ = 0, node_count_ = 0;
   Box_3 bounds_;

@@ -7,8 +7,10 @@
 // intersection, difference. Each subject runs `--relgeo_repetitions` times
 // (default 3); the table gives the minimum time, its ratio to the peer
 // (CGAL Epick for relgeo's double kernels, CGAL Epeck for Exact_kernel),
-// whether the output is a closed oriented manifold, and, measured once in a
-// forked process per subject, the peak memory above the operands.
+// whether the output is a closed oriented manifold (checked after the timed
+// run, for every subject: the checks are not the subject's work), and,
+// measured once in a forked process per subject, the peak memory above the
+// operands.
 //
 // Flags (besides Google Benchmark's): --relgeo_large (also run Epeck and the
 // exact kernel on the 10^6 pair), --relgeo_memory=false, --relgeo_repetitions=N.
@@ -22,6 +24,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <memory>
 
 #include "boolean_benchmark.h"
 #include "common/command_line.h"
@@ -99,15 +102,14 @@ const std::pair<Mesh, Mesh>& operands(const std::string& name) {
 namespace {
 
 template <class K>
-std::function<Run_outcome()> relgeo_run(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op, bool checks,
-                                        int threads = 1) {
-  return [&a, &b, op, checks, threads] {
+Timed_run relgeo_run(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op, bool checks, int threads = 1) {
+  return [&a, &b, op, checks, threads]() -> Inspect {
     // The output's validation report is off: CGAL's corefinement has none
     // (its cost is Boolean_timing::validation, reported by `relgeo boolean`).
-    const auto r = relgeo::boolean(a, b, op, K{},
-                                   {.check_operands = checks, .check_self_intersections = checks, .validate_output = false,
-                                    .threads = threads});
-    return Run_outcome{r.mesh.faces.size(), r.ok() && closed_oriented_manifold(r.mesh), volume(r.mesh)};
+    auto r = std::make_shared<relgeo::Boolean_result<K>>(relgeo::boolean(
+        a, b, op, K{},
+        {.check_operands = checks, .check_self_intersections = checks, .validate_output = false, .threads = threads}));
+    return [r] { return Run_outcome{r->mesh.faces.size(), r->ok() && closed_oriented_manifold(r->mesh), volume(r->mesh)}; };
   };
 }
 
@@ -151,7 +153,7 @@ std::map<Key, Figure> figures;
 
 
 // Peak resident memory above what the prepared operands use, in a forked child.
-double peak_memory_mb(const std::function<Run_outcome()>& run) {
+double peak_memory_mb(const Timed_run& run) {
   int fds[2];
   if (pipe(fds) != 0) return -1;
   std::fflush(stdout);
@@ -170,7 +172,7 @@ double peak_memory_mb(const std::function<Run_outcome()>& run) {
       clear << "5" << std::flush;  // VmHWM := VmRSS
     }
     const double before = static_cast<double>(proc_status_bytes("VmRSS"));
-    (void)run();
+    const Inspect output = run();  // kept until the peak is read
     const double extra = (static_cast<double>(proc_status_bytes("VmHWM")) - before) / 1048576.0;
     const ssize_t w = write(fds[1], &extra, sizeof extra);
     _exit(w == sizeof extra ? 0 : 1);
@@ -202,9 +204,11 @@ void register_all(int repetitions, bool large, bool memory) {
             const auto run = s.prepare(a, b, op);
             state.ResumeTiming();
             const auto t0 = std::chrono::steady_clock::now();
-            const Run_outcome o = run();
+            const Inspect output = run();
             const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            if (t < f.seconds) f.seconds = t, f.outcome = o;
+            state.PauseTiming();
+            if (t < f.seconds) f.seconds = t, f.outcome = output();
+            state.ResumeTiming();
           }
           if (memory && f.peak_mb < 0) {
             const auto run = s.prepare(a, b, op);

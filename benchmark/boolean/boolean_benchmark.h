@@ -32,12 +32,18 @@ struct Run_outcome {
   double volume = 0;
 };
 
+/// The timed run of a subject: the Boolean alone. It returns how to inspect
+/// its output (untimed, outside the memory probe: the checks of the output
+/// are not the subject's work).
+using Inspect = std::function<Run_outcome()>;
+using Timed_run = std::function<Inspect()>;
+
 /// One subject: a name ("relgeo filtered", "CGAL::corefine Epick"...) and
 /// its preparation (untimed: e.g. CGAL's Surface_mesh built from the
 /// operands), which returns the timed run.
 struct Subject {
   std::string name;
-  std::function<std::function<Run_outcome()>(const Mesh&, const Mesh&, relgeo::Boolean_operation)> prepare;
+  std::function<Timed_run(const Mesh&, const Mesh&, relgeo::Boolean_operation)> prepare;
   bool exact = false;  ///< exact arithmetic (compared with CGAL Epeck), skipped on large cases
   std::string peer;    ///< the subject its ratio is taken against
 };

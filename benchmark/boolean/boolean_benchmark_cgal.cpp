@@ -24,29 +24,32 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 // The Surface_mesh operands are built before the timed run (corefinement
 // changes them, so each run gets its own).
 template <class K>
-std::function<Run_outcome()> corefine(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
+Timed_run corefine(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
   auto operands = std::make_shared<std::pair<CGAL::Surface_mesh<typename K::Point_3>, CGAL::Surface_mesh<typename K::Point_3>>>(
       relgeo::to_surface_mesh<typename K::Point_3>(a), relgeo::to_surface_mesh<typename K::Point_3>(b));
-  return [operands, op] {
+  return [operands, op]() -> Inspect {
     auto& [sa, sb] = *operands;
-    CGAL::Surface_mesh<typename K::Point_3> out;
+    auto out = std::make_shared<CGAL::Surface_mesh<typename K::Point_3>>();
     bool ok = false;
     switch (op) {
-      case relgeo::Boolean_operation::union_of: ok = PMP::corefine_and_compute_union(sa, sb, out); break;
-      case relgeo::Boolean_operation::intersection: ok = PMP::corefine_and_compute_intersection(sa, sb, out); break;
-      default: ok = PMP::corefine_and_compute_difference(sa, sb, out);
+      case relgeo::Boolean_operation::union_of: ok = PMP::corefine_and_compute_union(sa, sb, *out); break;
+      case relgeo::Boolean_operation::intersection: ok = PMP::corefine_and_compute_intersection(sa, sb, *out); break;
+      default: ok = PMP::corefine_and_compute_difference(sa, sb, *out);
     }
-    Run_outcome r;
-    r.faces = out.number_of_faces();
-    r.valid = ok && CGAL::is_closed(out) && out.is_valid();
-    return r;
+    return [out, ok] {
+      Run_outcome r;
+      r.faces = out->number_of_faces();
+      r.valid = ok && CGAL::is_closed(*out) && out->is_valid();
+      return r;
+    };
   };
 }
 
-std::function<Run_outcome()> relgeo_on_epeck(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
-  return [&a, &b, op] {
-    const auto r = relgeo::boolean(a, b, op, relgeo::Cgal_kernel<CGAL::Epeck>{}, {.validate_output = false});
-    return Run_outcome{r.mesh.faces.size(), r.ok() && closed_oriented_manifold(r.mesh), volume(r.mesh)};
+Timed_run relgeo_on_epeck(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
+  return [&a, &b, op]() -> Inspect {
+    auto r = std::make_shared<relgeo::Boolean_result<relgeo::Cgal_kernel<CGAL::Epeck>>>(
+        relgeo::boolean(a, b, op, relgeo::Cgal_kernel<CGAL::Epeck>{}, {.validate_output = false}));
+    return [r] { return Run_outcome{r->mesh.faces.size(), r->ok() && closed_oriented_manifold(r->mesh), volume(r->mesh)}; };
   };
 }
 

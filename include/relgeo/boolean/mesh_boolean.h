@@ -721,9 +721,12 @@ template <class K = Filtered_exact_kernel>
 Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b,
                           Boolean_operation op, const K& k = K{}, const Boolean_options& options = {}) {
   if constexpr (internal::Runs_on_filtered_exact_kernel<K>) {
-    if (options.use_double_point_kernel)
-      return internal::with_exact_points<K>(
-          internal::Boolean_engine<Filtered_exact_kernel>(a, b, op, Filtered_exact_kernel{}, options).run());
+    if (options.use_double_point_kernel) {
+      // The engine is gone (its memory freed) before the points are converted.
+      Boolean_result<Filtered_exact_kernel> r =
+          internal::Boolean_engine<Filtered_exact_kernel>(a, b, op, Filtered_exact_kernel{}, options).run();
+      return internal::with_exact_points<K>(std::move(r));
+    }
   }
   return internal::Boolean_engine<K>(a, b, op, k, options).run();
 }

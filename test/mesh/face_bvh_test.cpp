@@ -116,6 +116,36 @@ TEST(FaceBvh, BoxQueryFindsExactlyTheOverlappingFaces) {
   }
 }
 
+// The nearest face by branch and bound is the brute-force minimum, for
+// points on, near and far from the mesh (a growing box search, its
+// predecessor, visited every face for far points: a fuzzing timeout).
+TEST(FaceBvh, NearestFaceIsTheBruteForceMinimum) {
+  const Mesh_d m = jitter(cube_sphere(12), 0.01);
+  const Face_bvh t(m);
+  const auto squared = [&](const Point_3<double>& p, Index f) {  // to the face's nearest corner: a stand-in distance
+    double best = std::numeric_limits<double>::infinity();
+    for (Index v : m.faces[f]) {
+      const Point_3<double>& c = m.vertices[v];
+      best = std::min(best, (p.x - c.x) * (p.x - c.x) + (p.y - c.y) * (p.y - c.y) + (p.z - c.z) * (p.z - c.z));
+    }
+    return best;
+  };
+  std::mt19937_64 g(21);
+  for (const double spread : {0.5, 2.0, 1e3, 1e8}) {
+    std::uniform_real_distribution<double> u(-spread, spread);
+    for (int i = 0; i < 40; ++i) {
+      const Point_3<double> p{u(g), u(g), u(g)};
+      double want = std::numeric_limits<double>::infinity();
+      for (Index f = 0; f < m.faces.size(); ++f) want = std::min(want, squared(p, f));
+      const auto [face, got] = t.nearest_face(p, [&](Index f) { return squared(p, f); });
+      EXPECT_EQ(got, want) << "spread " << spread << " point " << i;
+      ASSERT_LT(face, m.faces.size());
+      EXPECT_EQ(squared(p, face), got);
+    }
+  }
+  EXPECT_EQ(Face_bvh(std::span<const Box_3>{}).nearest_face({0, 0, 0}, [](Index) { return 0.0; }).first, invalid_index);
+}
+
 // Exact: whether p + t d, t in [0, t_max] (t_max < 0: unbounded) meets the box.
 bool exact_line_meets(const Box_3& b, const std::array<double, 3>& p, const std::array<mpq_class, 3>& d,
                       bool bounded) {

@@ -261,6 +261,53 @@ class Face_bvh {
         linear_query(origin, {direction.x, direction.y, direction.z}, false, std::numeric_limits<double>::infinity());
     query([&](const Box_3& b) { return s.may_meet(b); }, f);
   }
+  /// \brief The face nearest to p and its squared distance, by
+  /// `squared_distance(f)` (the caller's squared distance from p to face f,
+  /// never below the distance to f's box): branch and bound, nodes visited
+  /// nearest box first and skipped once their box is farther than the best
+  /// face so far. {invalid_index, infinity} without faces. Its cost does not
+  /// grow with p's distance to the mesh, unlike growing box queries.
+  template <class F>
+  std::pair<Index, double> nearest_face(const Point_3<double>& p, F&& squared_distance) const {
+    std::pair<Index, double> best{invalid_index, std::numeric_limits<double>::infinity()};
+    if (size_ == 0) return best;
+    const double q[3] = {p.x, p.y, p.z};
+    // Squared distance from p to a box, rounded down a little: a measurement
+    // whose rounding must not skip the nearest face.
+    const auto box_distance = [&](const auto& b) {
+      double d = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double gap = std::max({double(b.lo[k]) - q[k], q[k] - double(b.hi[k]), 0.0});
+        d += gap * gap;
+      }
+      return d * (1 - 0x1p-40);
+    };
+    struct Entry {
+      Index node;
+      double distance;
+    };
+    std::vector<Entry> stack{{0, box_distance(nodes_[0])}};
+    while (!stack.empty()) {
+      const Entry e = stack.back();
+      stack.pop_back();
+      if (e.distance > best.second) continue;
+      const Node& n = nodes_[e.node];
+      if (n.is_leaf()) {
+        for (Index s = n.first; s < n.first + n.count; ++s) {
+          if (box_distance(boxes_[s]) > best.second) continue;
+          const double d = squared_distance(faces_[s]);
+          if (d < best.second) best = {faces_[s], d};
+        }
+        continue;
+      }
+      const Entry l{n.first, box_distance(nodes_[n.first])}, r{n.first + 1, box_distance(nodes_[n.first + 1])};
+      // The nearer child on top.
+      if (l.distance <= r.distance) stack.push_back(r), stack.push_back(l);
+      else stack.push_back(l), stack.push_back(r);
+    }
+    return best;
+  }
+
 
  private:
   // A node's box in floats, rounded outward from the doubles it encloses:

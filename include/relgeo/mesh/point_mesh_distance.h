@@ -63,38 +63,21 @@ inline double squared_distance_to_triangle(const Point_3<double>& p, const Point
 /// reference: it must outlive this object).
 class Point_mesh_distance {
  public:
-  explicit Point_mesh_distance(const Triangle_mesh<Point_3<double>>& m) : mesh_(&m), bvh_(m) {
-    const Box_3& b = bvh_.bounds();
-    for (int k = 0; k < 3; ++k) diagonal_ = std::max(diagonal_, b.hi[k] - b.lo[k]);
-  }
+  explicit Point_mesh_distance(const Triangle_mesh<Point_3<double>>& m) : mesh_(&m), bvh_(m) {}
 
-  /// The distance from p to the mesh (infinity for a mesh without faces).
-  /// Searches boxes of growing radius around p until a face is found, then
-  /// once more with the distance found (the nearest face may lie outside the
-  /// first box that holds any face).
+  /// The distance from p to the mesh (infinity for a mesh without faces):
+  /// the nearest face by Face_bvh::nearest_face.
   double operator()(const Point_3<double>& p) const {
-    if (bvh_.empty()) return std::numeric_limits<double>::infinity();
-    double radius = std::max(diagonal_ * 1e-3, 1e-300);
-    double best = std::numeric_limits<double>::infinity();
-    for (int round = 0; round < 2100 && !std::isfinite(best); ++round, radius *= 2) best = search(p, radius, best);
-    return std::sqrt(search(p, std::sqrt(best), best));
+    const double squared = bvh_.nearest_face(p, [&](Index f) {
+      const Triangle& t = mesh_->faces[f];
+      return squared_distance_to_triangle(p, mesh_->vertices[t[0]], mesh_->vertices[t[1]], mesh_->vertices[t[2]]);
+    }).second;
+    return std::sqrt(squared);
   }
 
  private:
-  double search(const Point_3<double>& p, double radius, double best) const {
-    Box_3 q;
-    q.lo = {p.x - radius, p.y - radius, p.z - radius};
-    q.hi = {p.x + radius, p.y + radius, p.z + radius};
-    bvh_.for_each_face_in_box(q, [&](Index f) {
-      const Triangle& t = mesh_->faces[f];
-      best = std::min(best, squared_distance_to_triangle(p, mesh_->vertices[t[0]], mesh_->vertices[t[1]], mesh_->vertices[t[2]]));
-    });
-    return best;
-  }
-
   const Triangle_mesh<Point_3<double>>* mesh_;
   Face_bvh bvh_;
-  double diagonal_ = 0;
 };
 
 }  // namespace relgeo

@@ -35,8 +35,6 @@ class Point_table {
   Index size() const { return static_cast<Index>(slot_.size()); }
   /// The first index of an added point (A's and B's vertices come before).
   Index input_count() const { return static_cast<Index>(inputs_); }
-  /// How many points are held as the kernel's points (for statistics).
-  std::size_t held() const { return held_; }
 
   /// Point g; an input vertex is made the kernel's point on its first read
   /// (so this const read is not thread-safe). The reference stays valid.

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "relgeo/intersection/triangle_intersection.h"
@@ -158,6 +159,38 @@ TEST(FuzzRegression, NaiveKernelTriangleIntersectionDoesNotOverflowItsPolygon) {
   const auto p = k.construct_point_3_object();
   const auto at = [&](int i) { return p(v[i][0], v[i][1], v[i][2]); };
   EXPECT_NO_THROW((void)intersect_triangles(std::array{at(0), at(1), at(2)}, std::array{at(3), at(4), at(5)}, k));
+}
+
+/// fuzz/loop_limit, fuzz/corpus/loop_limit/regression_exact_bounds_beyond_double:
+/// a tetrahedron flattened into the plane z = 0, its fourth vertex at
+/// (DBL_MAX, DBL_MAX, 0). Under Exact_kernel the squared normal of a face
+/// through that vertex is a rational far beyond double's range, so the
+/// upper bound of |n| is +inf; the limit surface lies in the plane, the
+/// heights are 0, and their distances t |n| came out as 0 * inf = NaN. A
+/// zero height is now at distance zero.
+TEST(FuzzRegression, ExactBoundsOfFacesBeyondDoublesRangeAreOrdered) {
+  const double big = std::numeric_limits<double>::max();
+  const Exact_kernel k;
+  const auto p = k.construct_point_3_object();
+  Triangle_mesh<Exact_kernel::Point_3> flat;
+  flat.vertices = {p(0, 0, 0), p(1, 0, 0), p(0, 1, 0), p(big, big, 0)};
+  flat.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  const Loop_bound_options shallow{.irregular_depth = 2, .regular_depth = 1, .universal_depth = 2};
+  const auto r = Loop_error_bounds<Exact_kernel>(Loop_options{}, shallow).compute(flat, 0);
+  bool beyond_double = false;
+  for (Index g = 0; g < r.limit_mesh.faces.size(); ++g) {
+    ASSERT_FALSE(r.degenerate[g]);
+    beyond_double = beyond_double || std::isinf(r.normal_length[g]);
+    for (const auto* method : {&r.basis_range, &r.tangent_plane, &r.direct}) {
+      if (method->empty()) continue;
+      const auto& b = (*method)[g];
+      EXPECT_EQ(b.lower, 0) << "face " << g;
+      EXPECT_EQ(b.upper, 0) << "face " << g;
+      EXPECT_LE(b.lower_distance, 0) << "face " << g;
+      EXPECT_GE(b.upper_distance, 0) << "face " << g;
+    }
+  }
+  EXPECT_TRUE(beyond_double) << "no |n| beyond double's range: the case is not the hard one";
 }
 
 }  // namespace

@@ -433,11 +433,14 @@ class Loop_error_bounds {
   // The heights [lo, hi] as signed distances t |n|, rounded outward (a
   // product rounded to nearest is within half an ulp, so one step out bounds
   // it; for a negative height the larger length gives the lower distance).
+  // A zero height is at distance zero whatever |n|: an exact |n| beyond
+  // double's range has the upper length +inf, and 0 * inf is NaN.
   static Loop_face_bound<FT> make_bound(const FT& lo, const FT& hi, const Length_bounds& len) {
     Loop_face_bound<FT> b{lo, hi, 0, 0};
     const double l = lower_double(lo), u = upper_double(hi);
-    b.lower_distance = next_down(l * (l >= 0 ? len.lo : len.hi));
-    b.upper_distance = next_up(u * (u >= 0 ? len.hi : len.lo));
+    const auto distance = [](double t, double length) { return t == 0 ? 0.0 : t * length; };
+    b.lower_distance = next_down(distance(l, l >= 0 ? len.lo : len.hi));
+    b.upper_distance = next_up(distance(u, u >= 0 ? len.hi : len.lo));
     return b;
   }
 

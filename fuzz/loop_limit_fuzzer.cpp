@@ -12,8 +12,8 @@
 //    (as in loop_subdivision_fuzzer.cpp) and refused with a relgeo::Error
 //    otherwise;
 //  * a query outside the face range or the parameter triangle is an
-//    Invalid_surface_parameter, a NaN or infinite one Non_finite_input, any
-//    other gives a finite point; Interval_kernel's point encloses
+//    Invalid_surface_parameter, a NaN or infinite one Non_finite_input (with
+//    both defects, either), any other gives a finite point; Interval_kernel's point encloses
 //    Exact_kernel's where both use Loop's weights (valences 3, 4, 6);
 //  * bounds: lower <= upper on every non-degenerate face (floating-point
 //    kernels may refuse, Error(computation_failure), where a face normal's
@@ -113,7 +113,8 @@ void check_queries(const Mesh_d& m, bool accept, const std::vector<Query>& queri
   if (compare_exact) exact.emplace(to_kernel<Exact_kernel>(m));
   for (const Query& q : queries) {
     const bool finite = std::isfinite(q.u) && std::isfinite(q.v);
-    const bool inside = finite && q.face < m.faces.size() && internal::in_parameter_triangle(q.u, q.v);
+    const bool face_exists = q.face < m.faces.size();
+    const bool inside = finite && face_exists && internal::in_parameter_triangle(q.u, q.v);
     typename K::Point_3 p;
     try {
       p = s->evaluate(q.face, q.u, q.v);
@@ -121,7 +122,9 @@ void check_queries(const Mesh_d& m, bool accept, const std::vector<Query>& queri
       require(!finite, who + ": Non_finite_input for finite parameters");
       continue;
     } catch (const Invalid_surface_parameter&) {
-      require(finite && !inside, who + ": Invalid_surface_parameter for a valid parameter");
+      // A query with a face out of range and NaN parameters has two defects:
+      // the face is checked first, either error names a real one.
+      require(!face_exists || (finite && !inside), who + ": Invalid_surface_parameter for a valid parameter");
       continue;
     } catch (const std::exception& e) {
       require(false, who + ": evaluate threw " + e.what());

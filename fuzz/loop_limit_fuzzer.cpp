@@ -125,8 +125,8 @@ void check_queries(const Mesh_d& m, bool accept, const std::vector<Query>& queri
       require(!finite, who + ": Non_finite_input for finite parameters");
       continue;
     } catch (const Invalid_surface_parameter&) {
-      // A query with a face out of range and NaN parameters has two defects:
-      // the face is checked first, either error names a real one.
+      // A query with a face out of range and a non-finite parameter has two
+      // defects: the face is checked first; either error names a real one.
       require(!face_exists || (finite && !inside), who + ": Invalid_surface_parameter for a valid parameter");
       continue;
     } catch (const std::exception& e) {

@@ -158,10 +158,7 @@ bool normal_may_overflow(const Mesh_d& m) {
   if constexpr (!std::is_floating_point_v<FT> && !std::is_same_v<FT, Interval>) {
     return false;
   } else {
-    const double limit = std::ldexp(std::pow(std::numeric_limits<double>::max(), 0.25), -3);
-    for (const auto& p : m.vertices)
-      if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > limit) return true;
-    return false;
+    return largest_magnitude(m) > std::ldexp(std::pow(std::numeric_limits<double>::max(), 0.25), -3);
   }
 }
 
@@ -187,11 +184,7 @@ void check_bounds(const Mesh_d& m, bool accept, unsigned level) {
   // upper are both 0 up to the rounding of their computation and may cross
   // by it: by at most 2^-40 times the largest coordinate, as in the stress
   // test (doc/reliability.md, Sec. 5). Certified kernels exactly.
-  double rounding = 0;
-  if constexpr (std::is_floating_point_v<typename K::FT>) {
-    for (const auto& p : m.vertices) rounding = std::max({rounding, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    rounding *= 0x1p-40;
-  }
+  const double rounding = std::is_floating_point_v<typename K::FT> ? 0x1p-40 * largest_magnitude(m) : 0;
   const std::size_t nf = r->limit_mesh.faces.size();
   require(r->basis_range.size() == nf && r->tangent_plane.size() == nf, who + ": one bound per face");
   for (Index g = 0; g < nf; ++g) {

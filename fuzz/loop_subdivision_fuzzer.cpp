@@ -79,9 +79,7 @@ bool near_overflow(const Mesh_d& m) {
   if constexpr (std::is_floating_point_v<FT>) largest = static_cast<double>(std::numeric_limits<FT>::max());
   else if constexpr (std::is_same_v<FT, Interval>) largest = std::numeric_limits<double>::max();
   else return false;
-  for (const auto& p : m.vertices)
-    if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > std::ldexp(largest, -10)) return true;
-  return false;
+  return largest_magnitude(m) > std::ldexp(largest, -10);
 }
 
 template <class K>

@@ -5,6 +5,7 @@
 // add an isolated vertex, move a vertex, tag creases and corners).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -16,6 +17,13 @@
 namespace relgeo::fuzz {
 
 using Mesh_d = Triangle_mesh<Point_3<double>>;
+
+/// The largest |coordinate| of m's vertices (0 for no vertex; NaN ignored).
+inline double largest_magnitude(const Mesh_d& m) {
+  double r = 0;
+  for (const auto& p : m.vertices) r = std::max({r, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  return r;
+}
 
 inline Mesh_d base_mesh(int which) {
   Mesh_d m;

@@ -35,6 +35,19 @@ TEST(MeshTopology, ClosedMeshesHaveTheirEulerCharacteristicAndNoBoundary) {
   }
 }
 
+TEST(MeshTopology, TakeOppositesMovesThemOutAndEmptiesTheTopology) {
+  for (const Mesh_d& m : {icosphere(1), open_grid(3)}) {
+    Mesh_topology t = Mesh_topology::build(m);
+    std::vector<Index> expected(t.number_of_halfedges());
+    for (Index h = 0; h < expected.size(); ++h) expected[h] = t.opposite(h);
+    ASSERT_FALSE(expected.empty());
+    EXPECT_EQ(std::move(t).take_opposites(), expected);
+    EXPECT_EQ(t.number_of_faces(), 0u);  // NOLINT(bugprone-use-after-move): documented as left empty
+    EXPECT_EQ(t.number_of_edges(), 0u);
+    EXPECT_EQ(t.number_of_vertices(), 0u);
+  }
+}
+
 TEST(MeshTopology, RingsAreCounterClockwiseAndComplete) {
   const Mesh_d m = icosahedron();
   const Mesh_topology t = Mesh_topology::build(m);

@@ -5,7 +5,8 @@
 // The phases (Boolean_timing names them):
 //  1. check     operands are closed, oriented 2-manifolds with finite
 //               coordinates, no degenerate face and no self-intersection
-//               (their topology and face hierarchies are kept for later);
+//               (their half-edge opposites and face hierarchies are kept
+//               for later; the rest of their topology is freed);
 //  2. broad     face pairs whose boxes overlap (two Face_bvh hierarchies);
 //  3. narrow    each pair intersected exactly (intersect_triangles): new
 //               vertices are implicit points, and the same point reached from
@@ -33,6 +34,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -85,7 +87,7 @@ class Boolean_engine {
     if (!retriangulate(r)) return finish_failed(r, clock, &Boolean_timing::retriangulation);
     r.time.retriangulation = clock.lap();
     if (!label(r)) return finish_failed(r, clock, &Boolean_timing::labelling);
-    for (auto& t : topology_) t.reset();
+    for (auto& o : opposite_) std::vector<Index>().swap(o);
     r.time.labelling = clock.lap();
     assemble(r);
     r.time.assembly = clock.lap();
@@ -117,15 +119,24 @@ class Boolean_engine {
   using Check_kernel = Filtered_exact_kernel;
 
   // The checks build the operand's topology and (with the self-intersection
-  // test) its face hierarchy: the later phases reuse both.
+  // test) its face hierarchy. The later phases reuse the hierarchy and the
+  // half-edge opposites; the rest of the topology (four fifths of it) is
+  // freed before the next operand is checked (peak memory).
   void check_operand(int m, const char* name) {
     // check_solid adds the exact self-intersection test (Face_bvh pairs,
     // pairs sharing a vertex or an edge allowed exactly that) to check_mesh.
-    topology_[m].emplace();
+    Mesh_topology topology;
     Mesh_report report = options_.check_self_intersections
-                             ? internal::check_solid<Check_kernel>(*mesh_[m], {}, *topology_[m], bvh_[m], options_.threads)
-                             : internal::check_mesh<Check_kernel>(*mesh_[m], {}, *topology_[m]);
+                             ? internal::check_solid<Check_kernel>(*mesh_[m], {}, topology, bvh_[m], options_.threads)
+                             : internal::check_mesh<Check_kernel>(*mesh_[m], {}, topology);
     if (!report.is_valid()) throw Invalid_operand(name, std::move(report.issues));
+    opposite_[m] = std::move(topology).take_opposites();
+  }
+  // An edge of operand m named by its smaller half-edge (3 f + i): the
+  // opposites are all the Boolean needs of the operand's topology.
+  Index edge_key(int m, Index h) const {
+    const Index o = opposite_[m][h];
+    return o < h ? o : h;  // invalid_index (a boundary) is never the smaller
   }
 
   // ---- points -----------------------------------------------------------------
@@ -286,17 +297,17 @@ class Boolean_engine {
   };
 
   bool retriangulate(Result& r) {
-    // What lies on each face and on each edge of each operand: flat arrays
-    // indexed by the operands' own topology (face -> slot of the faces met).
+    // What lies on each face of each operand (face -> slot of the faces
+    // met) and on its edges: (edge key, point) pairs, sorted, for the few
+    // edges that have points (not a list per edge: that was a third of the
+    // peak memory on large operands).
     for (int m = 0; m < 2; ++m)
-      if (!topology_[m]) topology_[m] = Mesh_topology::build(*mesh_[m]);  // operands not checked
-    const std::array<const Mesh_topology*, 2> topology{&*topology_[0], &*topology_[1]};
+      if (opposite_[m].size() != 3 * mesh_[m]->faces.size())  // operands not checked
+        opposite_[m] = Mesh_topology::build(*mesh_[m]).take_opposites();
     std::array<std::vector<Index>, 2> slot{std::vector<Index>(mesh_[0]->faces.size(), invalid_index),
                                            std::vector<Index>(mesh_[1]->faces.size(), invalid_index)};
     std::array<std::vector<Face_constraints>, 2> faces;
-    std::array<std::vector<std::vector<Index>>, 2> edge_points{
-        std::vector<std::vector<Index>>(topology[0]->number_of_edges()),
-        std::vector<std::vector<Index>>(topology[1]->number_of_edges())};
+    std::array<std::vector<std::pair<Index, Index>>, 2> edge_points;
     const auto constraints = [&](int m, Index f) -> Face_constraints& {
       if (slot[m][f] == invalid_index) {
         slot[m][f] = static_cast<Index>(faces[m].size());
@@ -310,8 +321,7 @@ class Boolean_engine {
         if (l.where[m].kind == Triangle_location::Kind::vertex) continue;
         Face_constraints& c = constraints(m, l.face[m]);
         if (l.where[m].kind == Triangle_location::Kind::edge) {
-          const Index e = topology[m]->edge(3 * l.face[m] + l.where[m].index);
-          edge_points[m][e].push_back(id);
+          edge_points[m].push_back({edge_key(m, 3 * l.face[m] + l.where[m].index), id});
         } else {
           c.interior_points.push_back(id);
         }
@@ -325,6 +335,14 @@ class Boolean_engine {
       constraints(1, s.fb).segments.push_back({a, b});
     }
     curves_.finish(points_.size());
+    for (auto& e : edge_points) std::sort(e.begin(), e.end());
+    // The points on edge 3 f + e of operand m.
+    const auto on_edge = [&](int m, Index h) {
+      const Index key = edge_key(m, h);
+      const auto& e = edge_points[m];
+      return std::span(std::lower_bound(e.begin(), e.end(), std::pair{key, Index{0}}),
+                       std::upper_bound(e.begin(), e.end(), std::pair{key, invalid_index}));
+    };
     Face_triangulator<K, Point_table<K>> triangulator(k_, points_);
     for (int m = 0; m < 2; ++m) {
       const Mesh& mesh = *mesh_[m];
@@ -334,7 +352,7 @@ class Boolean_engine {
         const std::array<Index, 3> corners{find(offset_[m] + t[0]), find(offset_[m] + t[1]), find(offset_[m] + t[2])};
         // A face is split when it meets the other operand or a point lies on one of its edges.
         bool split = slot[m][f] != invalid_index;
-        for (int e = 0; e < 3 && !split; ++e) split = !edge_points[m][topology[m]->edge(3 * f + e)].empty();
+        for (int e = 0; e < 3 && !split; ++e) split = !on_edge(m, 3 * f + e).empty();
         if (!split) {
           pieces_[m].piece_of_face[f] = static_cast<Index>(pieces_[m].triangles.size());
           pieces_[m].triangles.push_back(corners);
@@ -350,7 +368,7 @@ class Boolean_engine {
         };
         c.corners = corners;
         for (int e = 0; e < 3; ++e) {
-          c.edge_points[e] = edge_points[m][topology[m]->edge(3 * f + e)];
+          for (const auto& [key, point] : on_edge(m, 3 * f + e)) c.edge_points[e].push_back(point);
           not_corner(c.edge_points[e]);
         }
         not_corner(c.interior_points);
@@ -385,7 +403,7 @@ class Boolean_engine {
   bool label(Result& r) {
     std::array<Piece_adjacency, 2> adjacency;
     for (int m = 0; m < 2; ++m)
-      if (!adjacency[m].build(pieces_[m], *topology_[m]))  // only a naive kernel's inconsistent answers can do that
+      if (!adjacency[m].build(pieces_[m], opposite_[m]))  // only a naive kernel's inconsistent answers can do that
         return fail(r, "labelling: the pieces of an operand are not consistently oriented");
     for (int m = 0; m < 2; ++m) {
       const auto [patch, count] = patches(pieces_[m], adjacency[m], curves_);
@@ -648,9 +666,9 @@ class Boolean_engine {
   }
 
   std::array<const Mesh*, 2> mesh_;
-  // The operands' topology and face hierarchy, built once (by the checks
-  // when they run).
-  std::array<std::optional<Mesh_topology>, 2> topology_;
+  // The operands' half-edge opposites (Mesh_topology::opposite) and face
+  // hierarchies, built once (by the checks when they run).
+  std::array<std::vector<Index>, 2> opposite_;
   std::array<std::optional<Face_bvh>, 2> bvh_;
   Boolean_operation op_;
   const K& k_;

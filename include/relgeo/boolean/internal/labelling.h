@@ -19,11 +19,11 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
-#include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::internal {
@@ -48,18 +48,19 @@ struct Pieces {
 
 /// The half-edge adjacency of one operand's pieces (half-edge 3 t + i of
 /// piece t goes from corner i to corner i + 1), derived from the operand's
-/// topology instead of built anew: a piece that is a whole input face takes
+/// half-edge opposites instead of built anew: a piece that is a whole input face takes
 /// its opposites from the face's when the neighbour is whole too; the
 /// half-edges of split faces' pieces, and those of whole faces next to a
 /// split face, are matched by their end points (the only half-edges whose
-/// opposite the operand's topology does not give, and the only ones on a
+/// opposite the operand's opposites do not give, and the only ones on a
 /// curve: a curve edge lies in a split face).
 class Piece_adjacency {
  public:
-  /// False when a directed edge occurs twice among the matched half-edges
-  /// (pieces no consistent surface has: only a naive kernel's answers can
-  /// give them).
-  bool build(const Pieces& p, const Mesh_topology& operand) {
+  /// `operand_opposite`: the opposite of each half-edge 3 f + i of the
+  /// operand (Mesh_topology::opposite). False when a directed edge occurs
+  /// twice among the matched half-edges (pieces no consistent surface has:
+  /// only a naive kernel's answers can give them).
+  bool build(const Pieces& p, std::span<const Index> operand_opposite) {
     const Index n = static_cast<Index>(p.triangles.size());
     opposite_.assign(3 * std::size_t(n), invalid_index);
     matched_.clear();
@@ -68,7 +69,7 @@ class Piece_adjacency {
       const bool whole = p.piece_of_face[f] == t;
       for (Index i = 0; i < 3; ++i) {
         if (whole) {
-          const Index o = operand.opposite(3 * f + i);
+          const Index o = operand_opposite[3 * f + i];
           if (o == invalid_index) continue;  // the operand's boundary
           const Index g = p.piece_of_face[o / 3];
           if (g != invalid_index) {

@@ -9,12 +9,13 @@
 // (CGAL Epick for relgeo's double kernels, CGAL Epeck for Exact_kernel),
 // whether the output is a closed oriented manifold (checked after the timed
 // run, for every subject: the checks are not the subject's work), and,
-// measured once in a forked process per subject, the peak memory above the
+// measured once in a fresh process per subject, the peak memory above the
 // operands.
 //
 // Flags (besides Google Benchmark's): --relgeo_large (also run Epeck and the
 // exact kernel on the 10^6 pair), --relgeo_memory=false, --relgeo_repetitions=N.
 #include <malloc.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -152,38 +153,63 @@ struct Figure {
 std::map<Key, Figure> figures;
 
 
-// Peak resident memory above what the prepared operands use, in a forked child.
-double peak_memory_mb(const Timed_run& run) {
+// Peak resident memory of one subject's run above what its prepared
+// operands use, measured in a fresh process: this program run again with
+// the --relgeo_memory_probe_* flags (probe_memory below). A forked child
+// would inherit the heap the earlier subjects left, whose free pages its
+// small allocations refill: the figure then depended on which subjects ran
+// before (up to 2 MB on the 20K-sphere case), not only on the subject.
+double peak_memory_mb(const std::string& case_name, relgeo::Boolean_operation op, const std::string& subject) {
+  const std::string flags[] = {"--relgeo_memory_probe_case=" + case_name,
+                               "--relgeo_memory_probe_op=" + std::string(relgeo::to_string(op)),
+                               "--relgeo_memory_probe_subject=" + subject};
+  char* argv[] = {const_cast<char*>("/proc/self/exe"), const_cast<char*>(flags[0].c_str()),
+                  const_cast<char*>(flags[1].c_str()), const_cast<char*>(flags[2].c_str()), nullptr};
   int fds[2];
   if (pipe(fds) != 0) return -1;
-  std::fflush(stdout);
-  const pid_t pid = fork();
-  if (pid < 0) return -1;
-  if (pid == 0) {
-    close(fds[0]);
-    // Blocks of 64 KB and more are mapped afresh and unmapped when freed, so
-    // that the peak counts the pages the run touches, not what the heap the
-    // parent left happens to hold (with the default threshold, one subject's
-    // figure moved by 30 MB between runs on the 10^6 pair).
-    mallopt(M_MMAP_THRESHOLD, 64 * 1024);
-    malloc_trim(0);  // the parent's free heap back to the system: it is not the run's memory
-    {
-      std::ofstream clear("/proc/self/clear_refs");
-      clear << "5" << std::flush;  // VmHWM := VmRSS
-    }
-    const double before = static_cast<double>(proc_status_bytes("VmRSS"));
-    const Inspect output = run();  // kept until the peak is read
-    const double extra = (static_cast<double>(proc_status_bytes("VmHWM")) - before) / 1048576.0;
-    const ssize_t w = write(fds[1], &extra, sizeof extra);
-    _exit(w == sizeof extra ? 0 : 1);
-  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addclose(&actions, fds[0]);
+  pid_t pid = -1;
+  const int spawned = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
   close(fds[1]);
-  double mb = -1;
-  if (read(fds[0], &mb, sizeof mb) != sizeof mb) mb = -1;
+  std::string out;
+  char buffer[256];
+  for (ssize_t n; spawned == 0 && (n = read(fds[0], buffer, sizeof buffer)) > 0;) out.append(buffer, std::size_t(n));
   close(fds[0]);
   int status = 0;
-  waitpid(pid, &status, 0);
-  return mb;
+  if (spawned != 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return -1;
+  return std::strtod(out.c_str(), nullptr);
+}
+
+// The probe: prepares the subject's operands (not counted), then runs it
+// once and prints the peak resident memory above that, in MB. Blocks of 64
+// KB and more are mapped afresh and unmapped when freed, so that the peak
+// counts the pages the run touches, not what free heap the preparation left
+// (with the default threshold, one subject's figure moved by 30 MB between
+// runs on the 10^6 pair).
+int probe_memory(const std::string& case_name, const std::string& op_name, const std::string& subject_name) {
+  const auto& [a, b] = operands(case_name);
+  const relgeo::Boolean_operation* op = nullptr;
+  for (const auto& o : kOps)
+    if (op_name == relgeo::to_string(o)) op = &o;
+  const std::vector<Subject> all = subjects();
+  const auto s = std::find_if(all.begin(), all.end(), [&](const Subject& x) { return x.name == subject_name; });
+  if (a.faces.empty() || !op || s == all.end()) return 1;
+  mallopt(M_MMAP_THRESHOLD, 64 * 1024);
+  const Timed_run run = s->prepare(a, b, *op);
+  malloc_trim(0);
+  {
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5" << std::flush;  // VmHWM := VmRSS
+  }
+  const double before = static_cast<double>(proc_status_bytes("VmRSS"));
+  const Inspect output = run();  // kept until the peak is read
+  const double extra = (static_cast<double>(proc_status_bytes("VmHWM")) - before) / 1048576.0;
+  std::printf("%.6f\n", extra);
+  return 0;
 }
 
 void register_all(int repetitions, bool large, bool memory) {
@@ -210,10 +236,7 @@ void register_all(int repetitions, bool large, bool memory) {
             if (t < f.seconds) f.seconds = t, f.outcome = output();
             state.ResumeTiming();
           }
-          if (memory && f.peak_mb < 0) {
-            const auto run = s.prepare(a, b, op);
-            f.peak_mb = peak_memory_mb(run);
-          }
+          if (memory && f.peak_mb < 0) f.peak_mb = peak_memory_mb(c.name, op, s.name);
         })->Iterations(1)->Repetitions(repetitions)->Unit(benchmark::kMillisecond)->ReportAggregatesOnly(true);
       }
 }
@@ -237,6 +260,9 @@ void print_table() {
 
 int main(int argc, char** argv) {
   relgeo_bench::Command_line args(argc, argv);
+  if (args.has("--relgeo_memory_probe_case"))  // a subject's memory, in a process of its own
+    return relgeo_bench::probe_memory(args.value("--relgeo_memory_probe_case"), args.value("--relgeo_memory_probe_op"),
+                                      args.value("--relgeo_memory_probe_subject"));
   const bool large = args.has("--relgeo_large");
   const bool memory = args.value("--relgeo_memory") != "false";
   const std::string reps = args.value("--relgeo_repetitions");

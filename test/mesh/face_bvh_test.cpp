@@ -59,6 +59,11 @@ TEST(FaceBvh, CrossAndSelfPairsAreExactlyTheOverlappingBoxes) {
       ASSERT_EQ(ta.size(), n);
       EXPECT_EQ(sorted(ta.overlapping_pairs(tb)), brute_pairs(a, b)) << "leaf " << leaf << " n " << n;
       EXPECT_EQ(sorted(ta.overlapping_pairs()), brute_self_pairs(a)) << "leaf " << leaf << " n " << n;
+      // Boxes without a hierarchy against one: the same pairs, by query box.
+      const auto with_boxes = tb.overlapping_pairs_with_boxes(a);
+      EXPECT_EQ(sorted(with_boxes), brute_pairs(a, b)) << "leaf " << leaf << " n " << n;
+      EXPECT_TRUE(std::is_sorted(with_boxes.begin(), with_boxes.end(),
+                                 [](const Face_pair& x, const Face_pair& y) { return x.first < y.first; }));
       std::size_t calls = 0;
       ta.for_each_overlapping_pair(tb, [&](Index, Index) { ++calls; });
       EXPECT_EQ(calls, brute_pairs(a, b).size());
@@ -101,6 +106,13 @@ TEST(FaceBvh, OutputDoesNotDependOnThreadCount) {
   EXPECT_EQ(ta.overlapping_pairs(1), ta2.overlapping_pairs(2));
   EXPECT_EQ(sorted(pairs1), brute_pairs(face_boxes(a), face_boxes(b)));
   EXPECT_EQ(sorted(ta.overlapping_pairs()), brute_self_pairs(face_boxes(a)));
+  // More query boxes than one chunk (4096): the chunks join in order.
+  const std::vector<Box_3> queries = face_boxes(a);
+  ASSERT_GT(queries.size(), 4096u);
+  const auto with_boxes = tb.overlapping_pairs_with_boxes(queries, 1);
+  EXPECT_EQ(with_boxes, tb2.overlapping_pairs_with_boxes(queries, 2));
+  EXPECT_EQ(with_boxes, tb.overlapping_pairs_with_boxes(queries, 2));
+  EXPECT_EQ(sorted(with_boxes), sorted(pairs1));
 }
 
 TEST(FaceBvh, BoxQueryFindsExactlyTheOverlappingFaces) {
@@ -247,6 +259,8 @@ TEST(FaceBvh, BadInputIsATypedError) {
   const Face_bvh empty(std::vector<Box_3>{});
   EXPECT_TRUE(empty.overlapping_pairs().empty());
   EXPECT_TRUE(empty.overlapping_pairs(Face_bvh(cube_sphere(2))).empty());
+  EXPECT_TRUE(empty.overlapping_pairs_with_boxes(face_boxes(cube_sphere(2))).empty());
+  EXPECT_TRUE(Face_bvh(cube_sphere(2)).overlapping_pairs_with_boxes({}).empty());
   EXPECT_TRUE(empty.bounds().is_empty());
 }
 

@@ -5,9 +5,10 @@
 // The phases (Boolean_timing names them):
 //  1. check     operands are closed, oriented 2-manifolds with finite
 //               coordinates, no degenerate face and no self-intersection
-//               (their half-edge opposites and face hierarchies are kept
-//               for later; the rest of their topology is freed);
-//  2. broad     face pairs whose boxes overlap (two Face_bvh hierarchies);
+//               (their half-edge opposites and B's face hierarchy are kept
+//               for later; the rest is freed);
+//  2. broad     face pairs whose boxes overlap (A's face boxes searched in
+//               B's Face_bvh);
 //  3. narrow    each pair intersected exactly (intersect_triangles): new
 //               vertices are implicit points, and the same point reached from
 //               several pairs becomes one vertex (by the two cells it joins,
@@ -76,10 +77,13 @@ class Boolean_engine {
     }
     r.time.check = clock.lap();
     number_points();
-    for (int m = 0; m < 2; ++m)
-      if (!bvh_[m]) bvh_[m].emplace(*mesh_[m], Face_bvh_options{.threads = options_.threads});
-    const std::vector<Face_pair> pairs = bvh_[0]->overlapping_pairs(*bvh_[1], options_.threads);
-    for (auto& bvh : bvh_) bvh.reset();  // each phase frees what no later one needs (peak memory)
+    // One hierarchy, not two: building A's costs more time and memory than
+    // searching B's with A's face boxes (face_boxes throws Invalid_mesh for
+    // bad unchecked operands, as the hierarchy of B does).
+    if (!bvh_b_) bvh_b_.emplace(*mesh_[1], Face_bvh_options{.threads = options_.threads});
+    const std::vector<Face_pair> pairs =
+        bvh_b_->overlapping_pairs_with_boxes(face_boxes(*mesh_[0]), options_.threads);
+    bvh_b_.reset();  // each phase frees what no later one needs (peak memory)
     r.counts.candidate_pairs = pairs.size();
     r.time.broad_phase = clock.lap();
     if (!narrow_phase(pairs, r)) return finish_failed(r, clock, &Boolean_timing::narrow_phase);
@@ -119,18 +123,21 @@ class Boolean_engine {
   using Check_kernel = Filtered_exact_kernel;
 
   // The checks build the operand's topology and (with the self-intersection
-  // test) its face hierarchy. The later phases reuse the hierarchy and the
-  // half-edge opposites; the rest of the topology (four fifths of it) is
-  // freed before the next operand is checked (peak memory).
+  // test) its face hierarchy. The later phases reuse the half-edge opposites
+  // and B's hierarchy; the rest of the topology (four fifths of it) and A's
+  // hierarchy are freed before B is checked: the peak memory is then one
+  // operand's topology and hierarchy, not both hierarchies and a topology.
   void check_operand(int m, const char* name) {
     // check_solid adds the exact self-intersection test (Face_bvh pairs,
     // pairs sharing a vertex or an edge allowed exactly that) to check_mesh.
     Mesh_topology topology;
+    std::optional<Face_bvh> bvh;
     Mesh_report report = options_.check_self_intersections
-                             ? internal::check_solid<Check_kernel>(*mesh_[m], {}, topology, bvh_[m], options_.threads)
+                             ? internal::check_solid<Check_kernel>(*mesh_[m], {}, topology, bvh, options_.threads)
                              : internal::check_mesh<Check_kernel>(*mesh_[m], {}, topology);
     if (!report.is_valid()) throw Invalid_operand(name, std::move(report.issues));
     opposite_[m] = std::move(topology).take_opposites();
+    if (m == 1) bvh_b_ = std::move(bvh);
   }
   // An edge of operand m named by its smaller half-edge (3 f + i): the
   // opposites are all the Boolean needs of the operand's topology.
@@ -666,10 +673,10 @@ class Boolean_engine {
   }
 
   std::array<const Mesh*, 2> mesh_;
-  // The operands' half-edge opposites (Mesh_topology::opposite) and face
-  // hierarchies, built once (by the checks when they run).
+  // The operands' half-edge opposites (Mesh_topology::opposite) and B's
+  // face hierarchy, built once (by the checks when they run).
   std::array<std::vector<Index>, 2> opposite_;
-  std::array<std::optional<Face_bvh>, 2> bvh_;
+  std::optional<Face_bvh> bvh_b_;
   Boolean_operation op_;
   const K& k_;
   Boolean_options options_;

@@ -234,6 +234,36 @@ class Face_bvh {
     return collect_overlapping_pairs<Face_pair>(
         [](Index a, Index b, std::vector<Face_pair>& out) { out.push_back({a, b}); }, threads);
   }
+  /// \brief Every pair (i, face of this) such that box `queries[i]`
+  /// overlaps the face's box, ordered by i, then as the hierarchy meets the
+  /// faces; on up to `threads` threads (the result does not depend on them).
+  /// The broad phase against boxes that have no hierarchy of their own:
+  /// cheaper in memory than building one (about 70 bytes a face), and in time for
+  /// a single search (a query per box costs less than a build).
+  /// \pre no box is NaN (an empty box meets nothing).
+  std::vector<Face_pair> overlapping_pairs_with_boxes(std::span<const Box_3> queries, int threads = 1) const {
+    const auto search = [&](std::size_t begin, std::size_t end, std::vector<Face_pair>& out) {
+      for (std::size_t i = begin; i < end; ++i)
+        if (do_overlap(queries[i], bounds_))
+          for_each_face_in_box(queries[i], [&](Index f) { out.push_back({static_cast<Index>(i), f}); });
+    };
+    std::vector<Face_pair> result;
+    if (internal::thread_count(threads) <= 1) {
+      search(0, queries.size(), result);
+      return result;
+    }
+    // Fixed chunks, whatever the thread count: the same pairs in the same order.
+    constexpr std::size_t chunk = 4096;
+    std::vector<std::vector<Face_pair>> parts((queries.size() + chunk - 1) / chunk);
+    internal::parallel_for_each_index(parts.size(), threads, [&](std::size_t c) {
+      search(c * chunk, std::min(queries.size(), (c + 1) * chunk), parts[c]);
+    });
+    std::size_t total = 0;
+    for (const auto& part : parts) total += part.size();
+    result.reserve(total);
+    for (const auto& part : parts) result.insert(result.end(), part.begin(), part.end());
+    return result;
+  }
 
   // ---- single queries -----------------------------------------------------
 

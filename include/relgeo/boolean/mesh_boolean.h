@@ -35,7 +35,6 @@
 #include <limits>
 #include <numeric>
 #include <optional>
-#include <span>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -138,12 +137,6 @@ class Boolean_engine {
     if (!report.is_valid()) throw Invalid_operand(name, std::move(report.issues));
     opposite_[m] = std::move(topology).take_opposites();
     if (m == 1) bvh_b_ = std::move(bvh);
-  }
-  // An edge of operand m named by its smaller half-edge (3 f + i): the
-  // opposites are all the Boolean needs of the operand's topology.
-  Index edge_key(int m, Index h) const {
-    const Index o = opposite_[m][h];
-    return o < h ? o : h;  // invalid_index (a boundary) is never the smaller
   }
 
   // ---- points -----------------------------------------------------------------
@@ -304,17 +297,16 @@ class Boolean_engine {
   };
 
   bool retriangulate(Result& r) {
-    // What lies on each face of each operand (face -> slot of the faces
-    // met) and on its edges: (edge key, point) pairs, sorted, for the few
-    // edges that have points (not a list per edge: that was a third of the
-    // peak memory on large operands).
+    // What lies on each face that is split (face -> slot) and on its edges
+    // (listed by both faces of an edge, through the opposites: no list per
+    // edge of the operand, which was a third of the peak memory on large
+    // operands).
     for (int m = 0; m < 2; ++m)
       if (opposite_[m].size() != 3 * mesh_[m]->faces.size())  // operands not checked
         opposite_[m] = Mesh_topology::build(*mesh_[m]).take_opposites();
     std::array<std::vector<Index>, 2> slot{std::vector<Index>(mesh_[0]->faces.size(), invalid_index),
                                            std::vector<Index>(mesh_[1]->faces.size(), invalid_index)};
     std::array<std::vector<Face_constraints>, 2> faces;
-    std::array<std::vector<std::pair<Index, Index>>, 2> edge_points;
     const auto constraints = [&](int m, Index f) -> Face_constraints& {
       if (slot[m][f] == invalid_index) {
         slot[m][f] = static_cast<Index>(faces[m].size());
@@ -326,11 +318,14 @@ class Boolean_engine {
       const Index id = find(l.point);
       for (int m = 0; m < 2; ++m) {
         if (l.where[m].kind == Triangle_location::Kind::vertex) continue;
-        Face_constraints& c = constraints(m, l.face[m]);
         if (l.where[m].kind == Triangle_location::Kind::edge) {
-          edge_points[m].push_back({edge_key(m, 3 * l.face[m] + l.where[m].index), id});
+          // On edge h of this face and on its opposite, of the face across:
+          // both faces are split, each lists the point on its own edge.
+          const Index h = 3 * l.face[m] + l.where[m].index, o = opposite_[m][h];
+          constraints(m, l.face[m]).edge_points[h % 3].push_back(id);
+          if (o != invalid_index) constraints(m, o / 3).edge_points[o % 3].push_back(id);
         } else {
-          c.interior_points.push_back(id);
+          constraints(m, l.face[m]).interior_points.push_back(id);
         }
       }
     }
@@ -342,14 +337,6 @@ class Boolean_engine {
       constraints(1, s.fb).segments.push_back({a, b});
     }
     curves_.finish(points_.size());
-    for (auto& e : edge_points) std::sort(e.begin(), e.end());
-    // The points on edge 3 f + e of operand m.
-    const auto on_edge = [&](int m, Index h) {
-      const Index key = edge_key(m, h);
-      const auto& e = edge_points[m];
-      return std::span(std::lower_bound(e.begin(), e.end(), std::pair{key, Index{0}}),
-                       std::upper_bound(e.begin(), e.end(), std::pair{key, invalid_index}));
-    };
     Face_triangulator<K, Point_table<K>> triangulator(k_, points_);
     for (int m = 0; m < 2; ++m) {
       const Mesh& mesh = *mesh_[m];
@@ -357,10 +344,9 @@ class Boolean_engine {
       for (Index f = 0; f < mesh.faces.size(); ++f) {
         const Triangle& t = mesh.faces[f];
         const std::array<Index, 3> corners{find(offset_[m] + t[0]), find(offset_[m] + t[1]), find(offset_[m] + t[2])};
-        // A face is split when it meets the other operand or a point lies on one of its edges.
-        bool split = slot[m][f] != invalid_index;
-        for (int e = 0; e < 3 && !split; ++e) split = !on_edge(m, 3 * f + e).empty();
-        if (!split) {
+        // A face is split when it meets the other operand or a point lies on
+        // one of its edges: then it has a slot.
+        if (slot[m][f] == invalid_index) {
           pieces_[m].piece_of_face[f] = static_cast<Index>(pieces_[m].triangles.size());
           pieces_[m].triangles.push_back(corners);
           pieces_[m].input_face.push_back(f);
@@ -374,10 +360,7 @@ class Boolean_engine {
                   v.end());
         };
         c.corners = corners;
-        for (int e = 0; e < 3; ++e) {
-          for (const auto& [key, point] : on_edge(m, 3 * f + e)) c.edge_points[e].push_back(point);
-          not_corner(c.edge_points[e]);
-        }
+        for (auto& on_edge : c.edge_points) not_corner(on_edge);
         not_corner(c.interior_points);
         const Face_triangulation tri = triangulator.run(c, projection_axis(mesh, f));
         if (!tri.ok) {

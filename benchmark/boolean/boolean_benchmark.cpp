@@ -26,6 +26,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "boolean_benchmark.h"
 #include "common/command_line.h"
@@ -148,7 +149,7 @@ struct Key {
 struct Figure {
   double seconds = 1e300;
   Run_outcome outcome;
-  double peak_mb = -1;
+  std::optional<double> peak_mb;  // absent: not measured (--relgeo_memory=false); negative: the probe failed
 };
 std::map<Key, Figure> figures;
 
@@ -236,7 +237,7 @@ void register_all(int repetitions, bool large, bool memory) {
             if (t < f.seconds) f.seconds = t, f.outcome = output();
             state.ResumeTiming();
           }
-          if (memory && f.peak_mb < 0) f.peak_mb = peak_memory_mb(c.name, op, s.name);
+          if (memory && !f.peak_mb) f.peak_mb = peak_memory_mb(c.name, op, s.name);
         })->Iterations(1)->Repetitions(repetitions)->Unit(benchmark::kMillisecond)->ReportAggregatesOnly(true);
       }
 }
@@ -250,8 +251,11 @@ void print_table() {
       if (s.name == k.subject) peer = s.peer;
     const auto p = figures.find({k.c, k.op, peer});
     const double ratio = p == figures.end() ? 1.0 : f.seconds / p->second.seconds;
-    std::printf("%-18s %-13s %-36s %10.1f %8.3f %6s %9zu %8.1f\n", k.c.c_str(), k.op.c_str(), k.subject.c_str(),
-                1e3 * f.seconds, ratio, f.outcome.valid ? "yes" : "NO", f.outcome.faces, f.peak_mb);
+    char peak[32] = "-";
+    if (f.peak_mb && *f.peak_mb < 0) std::snprintf(peak, sizeof peak, "FAILED");
+    else if (f.peak_mb) std::snprintf(peak, sizeof peak, "%.1f", *f.peak_mb);
+    std::printf("%-18s %-13s %-36s %10.1f %8.3f %6s %9zu %8s\n", k.c.c_str(), k.op.c_str(), k.subject.c_str(),
+                1e3 * f.seconds, ratio, f.outcome.valid ? "yes" : "NO", f.outcome.faces, peak);
   }
 }
 

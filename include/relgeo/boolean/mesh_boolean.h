@@ -76,9 +76,9 @@ class Boolean_engine {
     }
     r.time.check = clock.lap();
     number_points();
-    // One hierarchy, not two: building A's costs more time and memory than
-    // searching B's with A's face boxes (face_boxes throws Invalid_mesh for
-    // bad unchecked operands, as the hierarchy of B does).
+    // One hierarchy, not two (peak memory): B's, searched with A's face
+    // boxes, about as fast as building A's and searching both (face_boxes
+    // throws Invalid_mesh for bad unchecked operands, as B's hierarchy does).
     if (!bvh_b_) bvh_b_.emplace(*mesh_[1], Face_bvh_options{.threads = options_.threads});
     const std::vector<Face_pair> pairs =
         bvh_b_->overlapping_pairs_with_boxes(face_boxes(*mesh_[0]), options_.threads);

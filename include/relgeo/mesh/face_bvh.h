@@ -238,8 +238,9 @@ class Face_bvh {
   /// overlaps the face's box, ordered by i, then as the hierarchy meets the
   /// faces; on up to `threads` threads (the result does not depend on them).
   /// The broad phase against boxes that have no hierarchy of their own:
-  /// cheaper in memory than building one (about 70 bytes a face), and in time for
-  /// a single search (a query per box costs less than a build).
+  /// it saves building one (about 70 bytes a face) and costs about as much
+  /// time as building it and searching the two (less on large sets, a
+  /// little more on small ones: doc/mesh.md, "Broad phase").
   /// \pre no box is NaN (an empty box meets nothing).
   std::vector<Face_pair> overlapping_pairs_with_boxes(std::span<const Box_3> queries, int threads = 1) const {
     const auto search = [&](std::size_t begin, std::size_t end, std::vector<Face_pair>& out) {

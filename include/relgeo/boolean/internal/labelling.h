@@ -48,8 +48,8 @@ struct Pieces {
 
 /// The half-edge adjacency of one operand's pieces (half-edge 3 t + i of
 /// piece t goes from corner i to corner i + 1), derived from the operand's
-/// half-edge opposites instead of built anew: a piece that is a whole input face takes
-/// its opposites from the face's when the neighbour is whole too; the
+/// half-edge opposites instead of built anew: a piece that is a whole input
+/// face takes its opposites from the face's when the neighbour is whole too; the
 /// half-edges of split faces' pieces, and those of whole faces next to a
 /// split face, are matched by their end points (the only half-edges whose
 /// opposite the operand's opposites do not give, and the only ones on a

@@ -279,6 +279,17 @@ TEST(MeshBooleanOperands, BadOperandsAreRefusedWithTheDefect) {
   // Nothing is checked when asked not to (and then the result may be anything).
   EXPECT_NO_THROW((void)boolean(good, crossing, Op::union_of, Filtered_exact_kernel{},
                                 Boolean_options{.check_operands = false}));
+  // But an index out of range or a non-finite coordinate still gets a typed
+  // error from the broad phase, in either operand (A's face boxes, B's
+  // hierarchy), never a read out of bounds.
+  Mesh bad_index = cube(2, 0, 0, 1);
+  bad_index.faces[4][1] = 99;
+  for (const Mesh* bad : {&bad_index, &nan}) {
+    EXPECT_THROW((void)boolean(*bad, good, Op::union_of, Filtered_exact_kernel{}, Boolean_options{.check_operands = false}),
+                 Invalid_mesh);
+    EXPECT_THROW((void)boolean(good, *bad, Op::union_of, Filtered_exact_kernel{}, Boolean_options{.check_operands = false}),
+                 Invalid_mesh);
+  }
 }
 
 // Every result carries the validation report of its rounded output. Rounding

@@ -216,6 +216,43 @@ TEST(MeshBooleanExact, TheDoublePointHookGivesTheReferenceResult) {
     }
 }
 
+// A tetrahedron of subnormal size in the corner of the unit one (three
+// coplanar overlaps): its faces' normals underflow to zero in doubles, so
+// the double heuristic for the projection axis chose one along which a face
+// is degenerate and the retriangulation failed on valid operands (fuzzing
+// finding, fuzz/corpus/mesh_boolean/regression_subnormal_face_projection).
+// The axis is now one the kernel certifies; the volumes are exact.
+TEST(MeshBooleanDegenerate, AFaceOfSubnormalSizeIsProjectedAlongACertifiedAxis) {
+  const auto tetrahedron = [](double s) {
+    Mesh m;
+    m.vertices = {{0, 0, 0}, {s, 0, 0}, {0, s, 0}, {0, 0, s}};
+    m.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    return m;
+  };
+  const double tiny = 16384 * std::numeric_limits<double>::denorm_min();  // 8.1e-320
+  const Mesh a = tetrahedron(1), b = tetrahedron(tiny);
+  const auto volume_of = [](const Boolean_result<Exact_kernel>& r) {
+    mpq_class v = 0;
+    const auto p = r.exact_vertices();
+    for (const Triangle& f : r.mesh.faces) {
+      const auto &x = p[f[0]].point, &y = p[f[1]].point, &z = p[f[2]].point;
+      v += x.x * (y.y * z.z - y.z * z.y) - x.y * (y.x * z.z - y.z * z.x) + x.z * (y.x * z.y - y.y * z.x);
+    }
+    return mpq_class(v / 6);
+  };
+  const mpq_class va(1, 6), vb = mpq_class(tiny) * mpq_class(tiny) * mpq_class(tiny) / 6;
+  const mpq_class expected[] = {va, vb, va - vb};
+  const Op ops[] = {Op::union_of, Op::intersection, Op::difference};
+  for (int i = 0; i < 3; ++i) {
+    const auto exact = boolean(a, b, ops[i], Exact_kernel{});
+    ASSERT_TRUE(exact.ok()) << to_string(ops[i]) << ": " << exact.failure;
+    EXPECT_EQ(volume_of(exact), expected[i]) << to_string(ops[i]);
+    const auto filtered = boolean(a, b, ops[i], Filtered_exact_kernel{});
+    ASSERT_TRUE(filtered.ok()) << to_string(ops[i]) << ": " << filtered.failure;
+    EXPECT_EQ(filtered.mesh.faces, exact.mesh.faces) << to_string(ops[i]);
+  }
+}
+
 // The checks and the broad phase run on several threads when TBB is there
 // (this test's target links it): the same result, face for face; and a
 // self-intersecting operand found by the parallel test is refused alike.

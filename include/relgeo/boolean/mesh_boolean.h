@@ -362,7 +362,7 @@ class Boolean_engine {
         c.corners = corners;
         for (auto& on_edge : c.edge_points) not_corner(on_edge);
         not_corner(c.interior_points);
-        const Face_triangulation tri = triangulator.run(c, projection_axis(mesh, f));
+        const Face_triangulation tri = triangulator.run(c, projection_axis(m, f));
         if (!tri.ok) {
           r.failure = "retriangulation of face " + std::to_string(f) + " of " + (m == 0 ? "A" : "B") + ": " + tri.failure;
           return false;
@@ -377,15 +377,31 @@ class Boolean_engine {
     return true;
   }
 
-  // The axis along which face f's normal is largest (in doubles: only a
-  // choice; the triangulator checks the projection does not degenerate).
-  static int projection_axis(const Mesh& m, Index f) {
-    const Point_3<double>& a = m.vertices[m.faces[f][0]];
-    const Point_3<double>& b = m.vertices[m.faces[f][1]];
-    const Point_3<double>& c = m.vertices[m.faces[f][2]];
+  // The axis to project face f of operand m along: the one along which its
+  // normal is largest in doubles (the best-conditioned projection), unless
+  // the kernel finds the face degenerate in that projection; then the next
+  // axis whose projection it certifies. Doubles can choose wrongly: the
+  // normal of a face of subnormal size underflows to zero (a fuzzing
+  // finding). A valid face has an axis; when none is certified (a
+  // degenerate face, unchecked operands, an undecided kernel) the first is
+  // returned and the triangulation reports it.
+  int projection_axis(int m, Index f) const {
+    const Mesh& mesh = *mesh_[m];
+    const Triangle& t = mesh.faces[f];
+    const Point_3<double>& a = mesh.vertices[t[0]];
+    const Point_3<double>& b = mesh.vertices[t[1]];
+    const Point_3<double>& c = mesh.vertices[t[2]];
     const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
     const double n[3] = {std::abs(uy * vz - uz * vy), std::abs(uz * vx - ux * vz), std::abs(ux * vy - uy * vx)};
-    return n[0] >= n[1] && n[0] >= n[2] ? 0 : (n[1] >= n[2] ? 1 : 2);
+    const int first = n[0] >= n[1] && n[0] >= n[2] ? 0 : (n[1] >= n[2] ? 1 : 2);
+    const int second = (first + 1) % 3, third = (first + 2) % 3;
+    const std::array<int, 3> order{first, n[second] >= n[third] ? second : third, n[second] >= n[third] ? third : second};
+    const auto orient2 = k_.implicit_orientation_2_object();
+    for (int axis : order) {
+      const Certified_sign s = orient2(points_[offset_[m] + t[0]], points_[offset_[m] + t[1]], points_[offset_[m] + t[2]], axis);
+      if (is_certain(s) && s != Certified_sign::zero) return axis;
+    }
+    return first;
   }
 
   // ---- 5. labelling ---------------------------------------------------------------
@@ -443,7 +459,7 @@ class Boolean_engine {
     const Triangle& piece = pieces_[m].triangles[t];
     const Mesh& mine = *mesh_[m];
     const Mesh& other = *mesh_[1 - m];
-    const int axis = projection_axis(mine, f);
+    const int axis = projection_axis(m, f);
     const auto orient2 = k_.implicit_orientation_2_object();
     const auto corner = [&](int mesh, Index face, int i) -> const IP& {
       return points_[offset_[mesh] + (mesh == m ? mine : other).faces[face][i]];

@@ -259,11 +259,7 @@ class Face_bvh {
     internal::parallel_for_each_index(parts.size(), threads, [&](std::size_t c) {
       search(c * chunk, std::min(queries.size(), (c + 1) * chunk), parts[c]);
     });
-    std::size_t total = 0;
-    for (const auto& part : parts) total += part.size();
-    result.reserve(total);
-    for (const auto& part : parts) result.insert(result.end(), part.begin(), part.end());
-    return result;
+    return concatenated(parts);
   }
 
   // ---- single queries -----------------------------------------------------
@@ -701,11 +697,17 @@ class Face_bvh {
       *overlapping = 0;
       for (std::size_t n : calls) *overlapping += n;
     }
+    return concatenated(parts);
+  }
+  // The parallel parts, in order, in one vector.
+  template <class R>
+  static std::vector<R> concatenated(std::vector<std::vector<R>>& parts) {
     std::size_t total = 0;
     for (const auto& part : parts) total += part.size();
+    std::vector<R> result;
     result.reserve(total);
-    for (auto& part : parts) result.insert(result.end(), std::make_move_iterator(part.begin()),
-                                           std::make_move_iterator(part.end()));
+    for (auto& part : parts)
+      result.insert(result.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
     return result;
   }
 

@@ -73,12 +73,19 @@ struct Box_3 {
   friend bool operator==(const Box_3&, const Box_3&) = default;
 };
 
-/// Whether two closed boxes share a point (touching counts).
-inline bool do_overlap(const Box_3& a, const Box_3& b) {
-  // Non-short-circuit: six comparisons and no unpredictable branch.
-  return (a.lo[0] <= b.hi[0]) & (b.lo[0] <= a.hi[0]) & (a.lo[1] <= b.hi[1]) & (b.lo[1] <= a.hi[1]) &
-         (a.lo[2] <= b.hi[2]) & (b.lo[2] <= a.hi[2]);
+namespace detail {
+/// Whether two closed boxes with members lo[3], hi[3] share a point, for any
+/// mix of coordinate types (the hierarchy's float nodes, double face boxes).
+/// Non-short-circuit: six comparisons and no unpredictable branch.
+template <class BoxA, class BoxB>
+bool closed_boxes_overlap(const BoxA& a, const BoxB& b) {
+  return bool(int(a.lo[0] <= b.hi[0]) & int(b.lo[0] <= a.hi[0]) & int(a.lo[1] <= b.hi[1]) &
+              int(b.lo[1] <= a.hi[1]) & int(a.lo[2] <= b.hi[2]) & int(b.lo[2] <= a.hi[2]));
 }
+}  // namespace detail
+
+/// Whether two closed boxes share a point (touching counts).
+inline bool do_overlap(const Box_3& a, const Box_3& b) { return detail::closed_boxes_overlap(a, b); }
 
 /// Two face indices (of two meshes, or of one mesh with first < second).
 struct Face_pair {
@@ -366,14 +373,6 @@ class Face_bvh {
   }
   static float round_up(double v) { return -round_down(-v); }
 
-  static bool overlap(const Node& a, const Node& b) {
-    return (a.lo[0] <= b.hi[0]) & (b.lo[0] <= a.hi[0]) & (a.lo[1] <= b.hi[1]) & (b.lo[1] <= a.hi[1]) &
-           (a.lo[2] <= b.hi[2]) & (b.lo[2] <= a.hi[2]);
-  }
-  static bool overlap(const Box_3& a, const Node& b) {
-    return (a.lo[0] <= b.hi[0]) & (b.lo[0] <= a.hi[0]) & (a.lo[1] <= b.hi[1]) & (b.lo[1] <= a.hi[1]) &
-           (a.lo[2] <= b.hi[2]) & (b.lo[2] <= a.hi[2]);
-  }
   static Box_3 node_box(const Node& n) {
     Box_3 b;
     for (int k = 0; k < 3; ++k) b.lo[k] = n.lo[k], b.hi[k] = n.hi[k];
@@ -582,7 +581,7 @@ class Face_bvh {
   void leaf_pairs(const Node& x, const Face_bvh& other, const Node& y, Emit& emit) const {
     for (Index s = x.first; s < x.first + x.count; ++s) {
       const Box_3& bs = boxes_[s];
-      if (!overlap(bs, y)) continue;
+      if (!detail::closed_boxes_overlap(bs, y)) continue;
       for (Index t = y.first; t < y.first + y.count; ++t)
         if (do_overlap(bs, other.boxes_[t])) {
           if constexpr (Self) emit(std::min(faces_[s], other.faces_[t]), std::max(faces_[s], other.faces_[t]));
@@ -609,7 +608,7 @@ class Face_bvh {
         if (x.is_leaf()) return false;
         const Index l = x.first, r = x.first + 1;
         push(Node_pair{l, l});
-        if (overlap(nodes_[l], nodes_[r])) push(Node_pair{l, r});
+        if (detail::closed_boxes_overlap(nodes_[l], nodes_[r])) push(Node_pair{l, r});
         push(Node_pair{r, r});
         return true;
       }
@@ -617,10 +616,10 @@ class Face_bvh {
     if (x.is_leaf() && y.is_leaf()) return false;
     if (y.is_leaf() || (!x.is_leaf() && extent(x) >= extent(y))) {
       for (Index c = x.first; c < x.first + 2; ++c)
-        if (overlap(nodes_[c], y)) push(Node_pair{c, p.b});
+        if (detail::closed_boxes_overlap(nodes_[c], y)) push(Node_pair{c, p.b});
     } else {
       for (Index c = y.first; c < y.first + 2; ++c)
-        if (overlap(x, other.nodes_[c])) push(Node_pair{p.a, c});
+        if (detail::closed_boxes_overlap(x, other.nodes_[c])) push(Node_pair{p.a, c});
     }
     return true;
   }
@@ -651,7 +650,7 @@ class Face_bvh {
   template <bool Self>
   std::vector<Node_pair> frontier(const Face_bvh& other) const {
     std::vector<Node_pair> items;
-    if (size_ == 0 || other.size_ == 0 || !overlap(nodes_[0], other.nodes_[0])) return items;
+    if (size_ == 0 || other.size_ == 0 || !detail::closed_boxes_overlap(nodes_[0], other.nodes_[0])) return items;
     items.push_back({0, 0});
     constexpr std::size_t target = 256;
     while (items.size() < target) {

@@ -5,6 +5,8 @@
 // crash or hang. Bad operands are refused with the defect named.
 #include <gtest/gtest.h>
 
+#include <gmpxx.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -250,6 +252,52 @@ TEST(MeshBooleanDegenerate, AFaceOfSubnormalSizeIsProjectedAlongACertifiedAxis) 
     const auto filtered = boolean(a, b, ops[i], Filtered_exact_kernel{});
     ASSERT_TRUE(filtered.ok()) << to_string(ops[i]) << ": " << filtered.failure;
     EXPECT_EQ(filtered.mesh.faces, exact.mesh.faces) << to_string(ops[i]);
+  }
+}
+
+// Operands scaled by 2^-600 or 2^600: still normal doubles, exactly the
+// scaled operands, but the predicates' products underflow or overflow in
+// doubles. The exact kernels give the unscaled result scaled: the same faces,
+// exact vertices times the same power of two (the filtered kernel's
+// approximations of new vertices may then differ by an ulp: they are within
+// its rounding_error, not nearest). The naive kernel's orientations vanish on
+// valid faces: it fails with the pair named, where it threw before.
+TEST(MeshBooleanDegenerate, OperandsScaledByAPowerOfTwoGiveTheScaledResult) {
+  const Mesh a = cube(0, 0, 0, 1), b = rigidly_moved(icosphere(2, {0, 0, 0}, 0.7), 0.5, 0.3, {0.6, 0.5, 0.4});
+  const auto scaled = [](Mesh m, int e) {
+    for (auto& p : m.vertices) p = {std::ldexp(p.x, e), std::ldexp(p.y, e), std::ldexp(p.z, e)};
+    return m;
+  };
+  const auto times_power_of_two = [](const mpq_class& q, int e) {
+    mpq_class r;
+    if (e >= 0) mpq_mul_2exp(r.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
+    else mpq_div_2exp(r.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
+    return r;
+  };
+  for (int e : {-600, 600}) {
+    const Mesh as = scaled(a, e), bs = scaled(b, e);
+    for (Op op : {Op::union_of, Op::intersection, Op::difference}) {
+      const std::string what = std::string(to_string(op)) + " at 2^" + std::to_string(e);
+      const auto unscaled = boolean(a, b, op, Exact_kernel{});
+      ASSERT_TRUE(unscaled.ok()) << what << ": " << unscaled.failure;
+      const auto exact = boolean(as, bs, op, Exact_kernel{});
+      ASSERT_TRUE(exact.ok()) << what << ": " << exact.failure;
+      ASSERT_EQ(exact.mesh.faces, unscaled.mesh.faces) << what;
+      const auto p = exact.exact_vertices(), q = unscaled.exact_vertices();
+      for (std::size_t v = 0; v < p.size(); ++v) {
+        EXPECT_EQ(p[v].point.x, times_power_of_two(q[v].point.x, e)) << what << ", vertex " << v;
+        EXPECT_EQ(p[v].point.y, times_power_of_two(q[v].point.y, e)) << what << ", vertex " << v;
+        EXPECT_EQ(p[v].point.z, times_power_of_two(q[v].point.z, e)) << what << ", vertex " << v;
+      }
+      EXPECT_TRUE(exact.validation.is_valid_solid()) << what << ": " << exact.validation.summary();
+      const auto filtered = boolean(as, bs, op);
+      ASSERT_TRUE(filtered.ok()) << what << ": " << filtered.failure;
+      EXPECT_EQ(filtered.mesh.faces, unscaled.mesh.faces) << what;
+      EXPECT_TRUE(filtered.validation.is_valid_solid()) << what << ": " << filtered.validation.summary();
+      const auto naive = boolean(as, bs, op, Naive_kernel<double>{});
+      EXPECT_FALSE(naive.ok()) << what;
+      EXPECT_NE(naive.failure.find("degenerate in the kernel's arithmetic"), std::string::npos) << naive.failure;
+    }
   }
 }
 

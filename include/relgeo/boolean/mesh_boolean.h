@@ -181,30 +181,42 @@ class Boolean_engine {
   };
 
   bool narrow_phase(const std::vector<Face_pair>& pairs, Result& r) {
-    for (const auto& [fa, fb] : pairs) {
-      const auto x = intersect_triangles(triangle(*mesh_[0], fa), triangle(*mesh_[1], fb), k_);
-      if (x.kind == Triangle_intersection_kind::undecided) {
-        r.undecided_pairs.emplace_back(fa, fb);
-        continue;
+    Face_pair current;  // named by the failure when the kernel finds a face degenerate
+    try {
+      for (const Face_pair& pair : pairs) {
+        current = pair;
+        const auto [fa, fb] = pair;
+        const auto x = intersect_triangles(triangle(*mesh_[0], fa), triangle(*mesh_[1], fb), k_);
+        if (x.kind == Triangle_intersection_kind::undecided) {
+          r.undecided_pairs.emplace_back(fa, fb);
+          continue;
+        }
+        if (!x.perturbations.empty()) {
+          ++r.perturbations;
+          for (const auto& p : x.perturbations) r.largest_perturbation = std::max(r.largest_perturbation, p.rho);
+        }
+        if (x.kind == Triangle_intersection_kind::disjoint) continue;
+        ++r.counts.intersecting_pairs;
+        if (x.kind == Triangle_intersection_kind::coplanar_overlap) {
+          ++r.counts.coplanar_pairs;
+          coplanar_[0][fa].push_back(fb);
+          coplanar_[1][fb].push_back(fa);
+        }
+        std::array<Index, 6> ids{};
+        for (std::size_t i = 0; i < x.points.size(); ++i) ids[i] = register_point(x.points[i], fa, fb, x.locations[i]);
+        // Curve segments: a segment, or the boundary of a coplanar polygon.
+        const std::size_t n = x.points.size();
+        if (n == 2) segments_.push_back({ids[0], ids[1], fa, fb});
+        if (n >= 3)
+          for (std::size_t i = 0; i < n; ++i) segments_.push_back({ids[i], ids[(i + 1) % n], fa, fb});
       }
-      if (!x.perturbations.empty()) {
-        ++r.perturbations;
-        for (const auto& p : x.perturbations) r.largest_perturbation = std::max(r.largest_perturbation, p.rho);
-      }
-      if (x.kind == Triangle_intersection_kind::disjoint) continue;
-      ++r.counts.intersecting_pairs;
-      if (x.kind == Triangle_intersection_kind::coplanar_overlap) {
-        ++r.counts.coplanar_pairs;
-        coplanar_[0][fa].push_back(fb);
-        coplanar_[1][fb].push_back(fa);
-      }
-      std::array<Index, 6> ids{};
-      for (std::size_t i = 0; i < x.points.size(); ++i) ids[i] = register_point(x.points[i], fa, fb, x.locations[i]);
-      // Curve segments: a segment, or the boundary of a coplanar polygon.
-      const std::size_t n = x.points.size();
-      if (n == 2) segments_.push_back({ids[0], ids[1], fa, fb});
-      if (n >= 3)
-        for (std::size_t i = 0; i < n; ++i) segments_.push_back({ids[i], ids[(i + 1) % n], fa, fb});
+    } catch (const Precondition_violation& e) {
+      // A valid face that the kernel's arithmetic finds degenerate (a naive
+      // kernel's products underflow or overflow; the exact operand check
+      // passed), or a degenerate face of an unchecked operand.
+      r.failure = "narrow phase: face " + std::to_string(current.first) + " of A or face " +
+                  std::to_string(current.second) + " of B is degenerate in the kernel's arithmetic (" + e.what() + ")";
+      return false;
     }
     if (!r.undecided_pairs.empty()) {
       r.failure = "narrow phase: " + std::to_string(r.undecided_pairs.size()) +

@@ -51,6 +51,19 @@ bool typed_errors_only(F&& f, std::string_view context) {
   }
 }
 
+/// Runs f where the contract allows no exception at all (a call on input
+/// already found valid): any exception, typed or not, is a finding (abort).
+template <class F>
+void no_exception(F&& f, std::string_view context) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "relgeo fuzz: %.*s: exception on valid input: %s\n", static_cast<int>(context.size()),
+                 context.data(), e.what());
+    std::abort();
+  }
+}
+
 /// Structured input from the fuzzer's bytes: integers, choices and doubles,
 /// zero once the bytes run out (so every input means something).
 class Input {

@@ -43,6 +43,21 @@ TEST(FpEnvironment, EverySettingIsDetectedAndReplacedInScope) {
   }
 }
 
+TEST(FpEnvironment, AReducedX87PrecisionIsDetectedAndReplacedInScope) {
+  for (const auto& s : test::reduced_x87_precision_environments()) {
+    const test::Scoped_fp_environment caller(s);
+    EXPECT_FALSE(is_default_fp_environment()) << s.name;
+    EXPECT_FALSE(long_double_at_full_precision()) << s.name;
+    {
+      const Default_fp_environment scope;
+      EXPECT_TRUE(scope.changed()) << s.name;
+      EXPECT_TRUE(long_double_at_full_precision()) << s.name;
+    }
+    EXPECT_FALSE(long_double_at_full_precision()) << s.name << ": the caller's control word was not restored";
+  }
+  EXPECT_TRUE(long_double_at_full_precision());
+}
+
 TEST(FpEnvironment, TheDefaultEnvironmentIsLeftAlone) {
   const Default_fp_environment scope;
   EXPECT_FALSE(scope.changed());

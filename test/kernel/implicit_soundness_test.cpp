@@ -58,7 +58,7 @@ void compute_signs(Family_with_signs& f) {
     f.compare.push_back(oracle_or_missing(P, c.p, [&] { return oracle_compare_xyz(*P[c.p[0]], *P[c.p[1]]); }));
 }
 
-// At least 10^6 cases per predicate at scale 1 (11 families).
+// At least 10^6 cases per predicate at scale 1 (12 families).
 const std::vector<Family_with_signs>& families() {
   static const std::vector<Family_with_signs> data = [] {
     // The structured families are heavier in orientation_3 than in
@@ -130,7 +130,9 @@ Family_tally run(const Family_with_signs& f, std::size_t stride) {
       else {
         const double c[3] = {x.point.x, x.point.y, x.point.z};
         for (int axis = 0; axis < 3; ++axis)
-          if (!std::isfinite(c[axis]) || abs(mpq_class(c[axis]) - (*f.points[i])[axis]) > mpq_class(x.error)) {
+          // exact_rational reads bits (GMP's mpq_set_d computes, and the
+          // caller may have set denormals-are-zero).
+          if (!std::isfinite(c[axis]) || abs(exact_rational(c[axis]) - (*f.points[i])[axis]) > exact_rational(x.error)) {
             std::printf("[ %s ] %s point %zu: coordinate %g (exact %g) with stated error %g\n", K::name().c_str(),
                         f.w.name.c_str(), i, c[axis], (*f.points[i])[axis].get_d(), x.error);
             ++t.approximation.wrong;
@@ -220,7 +222,8 @@ TEST(ImplicitSoundness, ExactIsExact) { expect_sound<Exact_kernel>(run_all<Exact
 // tries it only on LPI points of low degree, where it is faster than GMP):
 // on every case whose inputs' range it accepts, the oracle's sign. It must
 // accept nearly every case of every family, the magnitudes family included
-// (its scaling undoes the magnitude), TPI points and degree 28 included.
+// (its scaling undoes the magnitude), TPI points and degree 28 included —
+// all but the subnormal family, whose exponents span too much.
 TEST(ImplicitSoundness, FilteredExpansionStageIsExactWhereItApplies) {
   using K = Filtered_exact_kernel;
   using P = K::Implicit_point_3;
@@ -252,7 +255,12 @@ TEST(ImplicitSoundness, FilteredExpansionStageIsExactWhereItApplies) {
     std::printf("[ expansion stage    ] %-18s %8zu cases %8zu out of range %8zu wrong\n", f.w.name.c_str(), t.cases,
                 t.uncertain, t.wrong);
     EXPECT_EQ(t.wrong, 0u) << f.w.name;
-    EXPECT_LE(t.uncertain, t.cases / 20) << f.w.name;
+    // The subnormal family mixes coordinates near 2^-1074 with ones near 1:
+    // its exponents span more than the stage's scaling accepts, and GMP
+    // decides it (by design; the filter and intervals take most of it).
+    if (f.w.name != "subnormal") {
+      EXPECT_LE(t.uncertain, t.cases / 20) << f.w.name;
+    }
   }
 }
 

@@ -1,6 +1,7 @@
 #include "fp_environments.h"
 
 #include <cfenv>
+#include <cstdint>
 #if defined(__x86_64__) || defined(__i386__)
 #include <xmmintrin.h>
 #endif
@@ -26,6 +27,17 @@ std::vector<Fp_environment_setting> non_default_fp_environments() {
   return out;
 }
 
+std::vector<Fp_environment_setting> reduced_x87_precision_environments() {
+  std::vector<Fp_environment_setting> out;
+#if defined(__x86_64__) || defined(__i386__)
+  out.push_back({"x87-53-bit", false, false, FE_TONEAREST, 53});
+  out.push_back({"x87-24-bit", false, false, FE_TONEAREST, 24});
+  out.push_back({"x87-53-bit+upward", false, false, FE_UPWARD, 53});
+  out.push_back({"x87-53-bit+toward-zero", false, false, FE_TOWARDZERO, 53});
+#endif
+  return out;
+}
+
 [[gnu::noinline]] Scoped_fp_environment::Scoped_fp_environment(const Fp_environment_setting& s) {
   std::fesetround(s.rounding);
 #if defined(__x86_64__) || defined(__i386__)
@@ -33,6 +45,12 @@ std::vector<Fp_environment_setting> non_default_fp_environments() {
   if (s.flush_to_zero) csr |= 0x8000u;
   if (s.denormals_are_zero) csr |= 0x0040u;
   _mm_setcsr(csr);
+  if (s.x87_precision != 64) {
+    std::uint16_t cw = 0;
+    __asm__ volatile("fnstcw %0" : "=m"(cw));
+    cw = static_cast<std::uint16_t>((cw & ~0x0300u) | (s.x87_precision == 53 ? 0x0200u : 0x0000u));
+    __asm__ volatile("fldcw %0" : : "m"(cw));
+  }
 #endif
   __asm__ volatile("" ::: "memory");
 }

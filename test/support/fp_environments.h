@@ -14,10 +14,18 @@ struct Fp_environment_setting {
   bool flush_to_zero = false;
   bool denormals_are_zero = false;
   int rounding = 0;  ///< FE_TONEAREST, FE_UPWARD, FE_DOWNWARD or FE_TOWARDZERO
+  /// x86's x87 precision control: 64 (the default), 53 or 24 significand
+  /// bits for long double arithmetic (set by some runtimes and graphics
+  /// libraries; it changes nothing in float or double, which run on SSE).
+  int x87_precision = 64;
 };
 
 /// Every setting the platform supports (FTZ/DAZ only on x86).
 std::vector<Fp_environment_setting> non_default_fp_environments();
+
+/// The x87 precision control at 53 and 24 bits, alone and with directed
+/// rounding (x86 only; empty elsewhere): the environments of long double.
+std::vector<Fp_environment_setting> reduced_x87_precision_environments();
 
 /// Sets `s` for its lifetime (out of line, so no computation of the caller is
 /// moved across the switch) and restores the default environment after.

@@ -26,6 +26,20 @@ constexpr bool all_finite(T... v) noexcept {
   return (std::isfinite(v) && ...);
 }
 
+/// |v| from its sign bit, in every floating-point environment: the
+/// expression `v < 0 ? -v : v` compares, and under denormals-are-zero a
+/// comparison reads a negative subnormal as 0 and keeps it negative.
+template <class T>
+  requires std::is_floating_point_v<T>
+constexpr T magnitude_of(T v) noexcept {
+  if constexpr (sizeof(T) == 8 || sizeof(T) == 4) {
+    using Bits = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
+    return std::bit_cast<T>(static_cast<Bits>(std::bit_cast<Bits>(v) & (~Bits{0} >> 1)));
+  } else {
+    return std::signbit(v) ? -v : v;  // x87 (no DAZ) or software long double: a sign-bit test, no comparison
+  }
+}
+
 /// A double >= the positive value v of a wider type, at most one ulp above it
 /// (publishes error constants of long double kernels without rounding them down).
 template <class T>

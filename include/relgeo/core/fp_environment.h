@@ -49,6 +49,22 @@ inline bool is_default_fp_environment() noexcept {
 #endif
 }
 
+/// Whether long double arithmetic rounds to its own precision: on x86 the
+/// x87 unit's precision control (bits 8-9 of its control word) can be set to
+/// 24 or 53 bits (some runtimes and graphics libraries do), and then every
+/// long double operation rounds to that many bits, which error bounds
+/// derived for 64 cannot cover. One read of the control word; true
+/// elsewhere.
+inline bool long_double_at_full_precision() noexcept {
+#if defined(__x86_64__) || defined(__i386__)
+  std::uint16_t x87 = 0;
+  __asm__ volatile("fnstcw %0" : "=m"(x87));
+  return (x87 & 0x0300u) == 0x0300u;
+#else
+  return true;
+#endif
+}
+
 /// The environment cannot be made the default (fesetenv failed).
 class Fp_environment_error : public Error {
  public:

@@ -37,7 +37,10 @@ class Interval_kernel
   static constexpr std::optional<double> orientation_3_error_bound = std::nullopt;
 
   static FT from_double(double v) { return Interval(v); }
+  /// Certified comparison; `uncertain` for a NaN or infinite end (as input,
+  /// an infinity stands for no finite number).
   static Certified_sign compare_ft(const FT& a, const FT& b) {
+    if (!finite(a) || !finite(b)) return Certified_sign::uncertain;
     return internal::in_default_fp_environment([&] { return compare(a, b); });
   }
 

@@ -38,6 +38,7 @@
 #include <limits>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/core/floating_point.h"
 
 namespace relgeo::internal {
 
@@ -48,7 +49,9 @@ struct Filtered_value {
   int roundings = 0;  ///< k
 
   constexpr Filtered_value() = default;
-  constexpr Filtered_value(T v) : value(v), magnitude(v < 0 ? -v : v), roundings(0) {}  // NOLINT: an exact input
+  // An exact input, loaded in the caller's environment (a point's
+  // coordinates): |v| from the sign bit, which no environment changes.
+  constexpr Filtered_value(T v) : value(v), magnitude(magnitude_of(v)), roundings(0) {}  // NOLINT: exact
   constexpr Filtered_value(T v, T m, int k) : value(v), magnitude(m), roundings(k) {}
 
   static constexpr T u = std::numeric_limits<T>::epsilon() / 2;
@@ -64,9 +67,12 @@ struct Filtered_value {
   }
 
   /// An upper bound of |value - exact| (infinite or NaN after an overflow).
+  /// The last product can underflow (a magnitude near lambda): rounded to a
+  /// subnormal it may lose up to half the smallest one, which the added
+  /// denorm_min restores (it changes nothing above the subnormal range).
   T error_bound() const {
     const T ku = static_cast<T>(roundings + 3) * u;
-    return magnitude * (ku * (1 + 8 * ku));
+    return magnitude * (ku * (1 + 8 * ku)) + std::numeric_limits<T>::denorm_min();
   }
 
   /// The exact sign when the bound separates the value from 0 (or the

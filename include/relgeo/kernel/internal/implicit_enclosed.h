@@ -51,9 +51,26 @@ Approximate_point_3 approximate_from_enclosure(const Homogeneous_3<NT>& h) {
   return a;
 }
 
+/// Whether an enclosure bounds a finite value: no NaN or infinity in its
+/// ends (an interval) or in its value and error bound (Filtered_value).
+inline bool is_finite_enclosure(const Interval& v) { return std::isfinite(v.inf()) && std::isfinite(v.sup()); }
+template <class T>
+bool is_finite_enclosure(const Filtered_value<T>& v) {
+  return std::isfinite(v.value) && std::isfinite(v.magnitude);
+}
+template <class NT>
+bool is_finite_enclosure(const Homogeneous_3<NT>& h) {
+  return is_finite_enclosure(h.x) && is_finite_enclosure(h.y) && is_finite_enclosure(h.z) && is_finite_enclosure(h.w);
+}
+
 /// Policy of Implicit_kernel_base for kernels whose implicit points are
 /// enclosures in NT (Filtered_value<T> or Interval), built from explicit
 /// points of type Explicit (Point_3<T> or Point_3<Interval>).
+///
+/// A point whose enclosure is not finite (an explicit point with a NaN or
+/// infinite coordinate, or coordinates that overflowed) gives `uncertain` in
+/// every predicate: interval arithmetic on [inf, inf] gives definite signs
+/// that mean nothing.
 template <class Explicit_, class NT>
 struct Enclosed_implicit_policy {
   using Explicit = Explicit_;
@@ -69,12 +86,15 @@ struct Enclosed_implicit_policy {
 
   static std::optional<Point> lpi(const Explicit& p, const Explicit& q, const Explicit& r, const Explicit& s,
                                   const Explicit& t) {
+    if (!finite(make(p), make(q), make(r), make(s), make(t))) return std::nullopt;
     return in_default_fp_environment([&] {
       if constexpr (closed_form) return checked(lpi_filter(p, q, r, s, t), Implicit_point_kind::lpi);
       else return checked(lpi_coordinates(to_nt(p), to_nt(q), to_nt(r), to_nt(s), to_nt(t)), Implicit_point_kind::lpi);
     });
   }
   static std::optional<Point> tpi(const std::array<Explicit, 9>& v) {
+    for (const Explicit& p : v)
+      if (!finite(make(p))) return std::nullopt;
     return in_default_fp_environment([&] {
       std::array<Point_3<NT>, 9> n;
       for (int i = 0; i < 9; ++i) n[i] = to_nt(v[i]);
@@ -82,27 +102,44 @@ struct Enclosed_implicit_policy {
     });
   }
   static Certified_sign orientation_3(const Point& a, const Point& b, const Point& c, const Point& d) {
-    return in_default_fp_environment([&] { return orientation_3_sign<NT>({&a.h, &b.h, &c.h, &d.h}); });
+    return in_default_fp_environment([&] {
+      if (!finite(a, b, c, d)) return Certified_sign::uncertain;
+      return orientation_3_sign<NT>({&a.h, &b.h, &c.h, &d.h});
+    });
   }
   /// d against the plane of three input points.
   static Certified_sign orientation_3(const Explicit& a, const Explicit& b, const Explicit& c, const Point& d) {
     if constexpr (closed_form)
-      return in_default_fp_environment([&] { return orientation_3_filter(a, b, c, d.h).sign() * sign_of_w(d.h); });
+      return in_default_fp_environment([&] {
+        if (!finite(make(a), make(b), make(c), d)) return Certified_sign::uncertain;
+        return orientation_3_filter(a, b, c, d.h).sign() * sign_of_w(d.h);
+      });
     else
       return orientation_3(make(a), make(b), make(c), d);
   }
   static Certified_sign orientation_2(const Point& a, const Point& b, const Point& c, int axis) {
-    return in_default_fp_environment([&] { return orientation_2_sign<NT>({&a.h, &b.h, &c.h}, axis); });
+    return in_default_fp_environment([&] {
+      if (!finite(a, b, c)) return Certified_sign::uncertain;
+      return orientation_2_sign<NT>({&a.h, &b.h, &c.h}, axis);
+    });
   }
   static Certified_sign compare_xyz(const Point& a, const Point& b) {
-    return in_default_fp_environment([&] { return compare_xyz_sign(a.h, b.h); });
+    return in_default_fp_environment([&] {
+      if (!finite(a, b)) return Certified_sign::uncertain;
+      return compare_xyz_sign(a.h, b.h);
+    });
   }
   static Approximate_point_3 approximate(const Point& a) {
     return in_default_fp_environment([&] { return approximate_from_enclosure(a.h); });
   }
 
  private:
-  // Built only when W is certainly nonzero (which also excludes NaN/Inf input).
+  template <class... Points>
+  static bool finite(const Points&... p) {
+    return (is_finite_enclosure(p.h) && ...);
+  }
+  // Built only when W is certainly nonzero (and from finite points: an
+  // interval W of infinite inputs can look certainly nonzero).
   static std::optional<Point> checked(const Homogeneous_3<NT>& h, Implicit_point_kind kind) {
     const Certified_sign w = certified_sign_of(h.w);
     if (w != Certified_sign::positive && w != Certified_sign::negative) return std::nullopt;

@@ -47,12 +47,16 @@ constexpr int defining_point_count(Implicit_point_kind kind) {
 }
 
 /// An implicit point of double inputs with its first-stage coordinates.
-/// 88 bytes: an explicit point (most points of a mesh) is its filter, whose
+/// 128 bytes: an explicit point (most points of a mesh) is its filter, whose
 /// values are its coordinates exactly; the 5 or 9 defining points of an LPI
 /// or TPI point are stored once, shared by the copies.
 struct Staged_implicit_point {
   Homogeneous_3<Filtered_value<double>> filter;
   Implicit_point_kind kind = Implicit_point_kind::explicit_point;
+  /// No NaN or infinity among its defining doubles (LPI and TPI points are
+  /// built from finite ones only); predicates on a point that is not answer
+  /// `uncertain`, even where they would not read the bad coordinate.
+  bool finite = true;
   std::shared_ptr<const std::array<Point_3<double>, 9>> defining;  ///< null for an explicit point
 
   /// The i-th defining point, i < defining_point_count(kind) (the point
@@ -139,10 +143,19 @@ auto implicit_formula(const std::array<const Staged_implicit_point*, N>& points,
 
 /// Runs a predicate `sign(array of homogeneous pointers)` through the
 /// stages on the points given.
+///
+/// A point with a NaN or an infinity among its defining doubles (only an
+/// explicit point can hold one) gives `uncertain`, before any stage: the
+/// later stages would decode the bits of a NaN or an infinity as a finite
+/// number, and the first would answer where the bad coordinate is not read
+/// (a projection dropping it, a comparison decided before it).
 template <std::size_t N, class Sign>
 Certified_sign staged_sign(const std::array<const Staged_implicit_point*, N>& points, const Sign& sign) {
   std::array<const Homogeneous_3<Filtered_value<double>>*, N> filters;
-  for (std::size_t i = 0; i < N; ++i) filters[i] = &points[i]->filter;
+  bool finite = true;
+  for (std::size_t i = 0; i < N; ++i) filters[i] = &points[i]->filter, finite = finite & points[i]->finite;
+  if (!finite) [[unlikely]]
+    return Certified_sign::uncertain;
   const Certified_sign first = in_default_fp_environment([&] { return sign(filters); });
   if (is_certain(first)) [[likely]]
     return first;
@@ -162,6 +175,7 @@ struct Staged_implicit_policy {
   static Point make(const Explicit& p) {
     Point r;
     r.filter = explicit_coordinates(Point_3<Filtered_value<double>>{p.x, p.y, p.z});
+    r.finite = all_finite(p.x, p.y, p.z);  // the same in every environment (DAZ reads a subnormal as 0: finite)
     return r;
   }
   static std::optional<Point> lpi(const Explicit& p, const Explicit& q, const Explicit& r, const Explicit& s,
@@ -178,6 +192,8 @@ struct Staged_implicit_policy {
   /// orientation_3 of explicit a, b, c and any d (the common query: a point
   /// against an input triangle's plane) without building a, b, c first.
   static Certified_sign orientation_3(const Explicit& a, const Explicit& b, const Explicit& c, const Point& d) {
+    if (!(all_finite(a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z) & d.finite)) [[unlikely]]
+      return Certified_sign::uncertain;
     const Certified_sign first = in_default_fp_environment([&] {
       return orientation_3_filter(a, b, c, d.filter).sign() * sign_of_w(d.filter);
     });

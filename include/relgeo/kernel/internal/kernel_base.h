@@ -7,6 +7,12 @@
 // and inherits the point types, point construction, compare_xy_2, the
 // coplanar orientation (built on its own Orientation_2, as CGAL's
 // coplanar_orientationC3 is) and the simple constructions.
+//
+// Constructions compute in FT. Over intervals they are enclosures only in
+// the default floating-point environment (outward rounding from round to
+// nearest: core/interval.h), so they run in it whatever the caller set;
+// over floating-point types they are plain floating point in the caller's
+// environment, and over exact or MPFR types the environment plays no part.
 #pragma once
 
 #include <bit>
@@ -20,6 +26,7 @@
 #include "relgeo/core/errors.h"
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/core/floating_point.h"
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/internal/semi_static_filter.h"
 #include "relgeo/kernel/point.h"
@@ -101,13 +108,15 @@ class Kernel_base {
   /// Midpoint, computed in FT ((p + q) / 2 coordinate-wise).
   struct Construct_midpoint_2 {
     Point_2 operator()(const Point_2& p, const Point_2& q) const {
-      return Point_2{FT(FT(p.x + q.x) / FT(2)), FT(FT(p.y + q.y) / FT(2))};
+      return in_construction_environment(
+          [&] { return Point_2{FT(FT(p.x + q.x) / FT(2)), FT(FT(p.y + q.y) / FT(2))}; });
     }
   };
   struct Construct_midpoint_3 {
     Point_3 operator()(const Point_3& p, const Point_3& q) const {
-      return Point_3{FT(FT(p.x + q.x) / FT(2)), FT(FT(p.y + q.y) / FT(2)),
-                     FT(FT(p.z + q.z) / FT(2))};
+      return in_construction_environment([&] {
+        return Point_3{FT(FT(p.x + q.x) / FT(2)), FT(FT(p.y + q.y) / FT(2)), FT(FT(p.z + q.z) / FT(2))};
+      });
     }
   };
 
@@ -117,31 +126,44 @@ class Kernel_base {
     Point_3 operator()(std::span<const Point_3> points, std::span<const FT> weights) const {
       if (points.size() != weights.size() || points.empty())
         throw Precondition_violation("construct_barycenter_3: sizes differ or are zero");
-      Point_3 r{FT(0), FT(0), FT(0)};
-      for (std::size_t i = 0; i < points.size(); ++i) {
-        r.x = FT(r.x + FT(weights[i] * points[i].x));
-        r.y = FT(r.y + FT(weights[i] * points[i].y));
-        r.z = FT(r.z + FT(weights[i] * points[i].z));
-      }
-      return r;
+      return in_construction_environment([&] {
+        Point_3 r{FT(0), FT(0), FT(0)};
+        for (std::size_t i = 0; i < points.size(); ++i) {
+          r.x = FT(r.x + FT(weights[i] * points[i].x));
+          r.y = FT(r.y + FT(weights[i] * points[i].y));
+          r.z = FT(r.z + FT(weights[i] * points[i].z));
+        }
+        return r;
+      });
     }
   };
 
   /// Squared Euclidean distance, computed in FT.
   struct Compute_squared_distance_2 {
     FT operator()(const Point_2& p, const Point_2& q) const {
-      const FT dx = p.x - q.x, dy = p.y - q.y;
-      return FT(FT(dx * dx) + FT(dy * dy));
+      return in_construction_environment([&] {
+        const FT dx = p.x - q.x, dy = p.y - q.y;
+        return FT(FT(dx * dx) + FT(dy * dy));
+      });
     }
   };
   struct Compute_squared_distance_3 {
     FT operator()(const Point_3& p, const Point_3& q) const {
-      const FT dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
-      return FT(FT(FT(dx * dx) + FT(dy * dy)) + FT(dz * dz));
+      return in_construction_environment([&] {
+        const FT dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
+        return FT(FT(FT(dx * dx) + FT(dy * dy)) + FT(dz * dz));
+      });
     }
   };
 
   Construct_point_2 construct_point_2_object() const { return {}; }
+
+  /// f() in the environment FT's constructions need (see the file comment).
+  template <class F>
+  static auto in_construction_environment(const F& f) {
+    if constexpr (is_interval_v<FT>) return in_default_fp_environment(f);
+    else return f();
+  }
 
   /// Certified kernels give no definite answer about points with a NaN or
   /// infinite coordinate, even where a projection or the first coordinate of a

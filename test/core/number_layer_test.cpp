@@ -4,9 +4,12 @@
 // type, interval division, MPFR value semantics.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cfenv>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "relgeo/core/number_traits.h"
 #include "support/fp_environments.h"
@@ -158,6 +161,51 @@ TEST(NumberLayer, SignsDoNotDependOnTheFloatingPointEnvironment) {
     EXPECT_EQ(certified_sign(-static_cast<double>(tiny)), Certified_sign::negative) << s.name;
     EXPECT_EQ(exact_rational(static_cast<double>(tiny)), mpq_class(1) / (mpz_class(1) << 1074)) << s.name;
   }
+}
+
+// norm_up is an upper bound of the exact norm, and the nearest double above
+// it off the fast range: its squares are summed exactly whatever the
+// exponents (a fixed 2200 bits rounded norm_up(2^600, 2^-1074) down to
+// 2^600), in every floating-point environment.
+TEST(NumberLayer, NormUpBoundsTheExactNormAtEveryScale) {
+  const auto squared = [](double x, double y, double z) -> mpq_class {
+    const mpq_class a = exact_rational(x), b = exact_rational(y), c = exact_rational(z);
+    return a * a + b * b + c * c;
+  };
+  EXPECT_GT(norm_up(0x1p600, 0x1p-1074), 0x1p600);
+  EXPECT_EQ(norm_up(0x1p600, 0x1p-1074), next_up(0x1p600));
+  EXPECT_EQ(norm_up(0x1p-1074, 0, 0), 0x1p-1074);
+  EXPECT_EQ(norm_up(3 * 0x1p700, 4 * 0x1p700), 5 * 0x1p700);  // exact: the MPFR path rounds a 5 to itself
+  std::mt19937_64 rng(20261127);
+  const auto value = [&rng] {
+    const int e = static_cast<int>(rng() % 2098) - 1074;
+    const double v = std::ldexp(1.0 + static_cast<double>(rng() >> 12) * 0x1p-52, std::min(e, 1020));
+    return (rng() & 1) ? -v : v;
+  };
+  std::vector<test::Fp_environment_setting> settings = test::non_default_fp_environments();
+  settings.insert(settings.begin(), {"default", false, false, FE_TONEAREST});
+  for (const auto& setting : settings)
+    for (int i = 0; i < 3000; ++i) {
+      const double x = value(), y = value(), z = i % 3 == 0 ? 0.0 : value();
+      const double n = [&] {
+        const test::Scoped_fp_environment environment(setting);
+        return norm_up(x, y, z);
+      }();
+      const mpq_class s = squared(x, y, z);
+      if (!std::isfinite(n)) {  // only when the norm is beyond the largest double
+        EXPECT_GT(s, squared(std::numeric_limits<double>::max(), 0, 0)) << x << " " << y << " " << z;
+        continue;
+      }
+      const mpq_class above = exact_rational(n);
+      EXPECT_GE(above * above, s) << setting.name << ": " << x << " " << y << " " << z;
+      // The nearest double above off the fast range (every nonzero |v| in
+      // [2^-500, 2^500]), within 2^-48 relative on it.
+      const auto in_range = [](double v) { return v == 0 || (std::abs(v) >= 0x1p-500 && std::abs(v) <= 0x1p500); };
+      const bool fast = in_range(x) && in_range(y) && in_range(z);
+      const mpq_class below = fast ? exact_rational(n) / (1 + mpq_class(1, mpz_class(1) << 48))
+                                   : exact_rational(next_down(n));
+      EXPECT_LT(below * below, s) << setting.name << ": " << x << " " << y << " " << z;
+    }
 }
 
 TEST(NumberLayer, MpfrNumbersAreValuesWithCompleteArithmetic) {

@@ -18,10 +18,13 @@
 #include <mpfr.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <type_traits>
 
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/internal/error_free.h"
 #include "relgeo/core/mpfr_number.h"
 
@@ -146,19 +149,70 @@ inline double sqrt_rational(const mpq_class& q, Rounding r, mpfr_prec_t bits = 1
   return round_mpfr<double>(v.get(), r);
 }
 
-/// sqrt(x^2 + y^2 + z^2) rounded upward. In double with a relative margin of
-/// 2^-50 when every nonzero |component| lies in [2^-500, 2^500] (at most 4
-/// roundings, relative error < 2.5 u, no underflow or overflow); otherwise in
-/// MPFR with exact squares.
+namespace internal {
+
+/// The bits that hold a + b exactly, for exact MPFR values a and b: from
+/// one above the higher leading bit (a carry) down to the lower last set bit
+/// (mpfr_min_prec: the bits x needs). A zero adds nothing.
+inline mpfr_prec_t exact_sum_bits(mpfr_srcptr a, mpfr_srcptr b) {
+  if (mpfr_zero_p(a)) return std::max<mpfr_prec_t>(mpfr_min_prec(b), MPFR_PREC_MIN);
+  if (mpfr_zero_p(b)) return std::max<mpfr_prec_t>(mpfr_min_prec(a), MPFR_PREC_MIN);
+  const long top = std::max<long>(mpfr_get_exp(a), mpfr_get_exp(b)) + 1;
+  const long low = std::min<long>(mpfr_get_exp(a) - mpfr_min_prec(a), mpfr_get_exp(b) - mpfr_min_prec(b));
+  return static_cast<mpfr_prec_t>(top - low);
+}
+
+/// a + b, exactly.
+inline Mpfr_value exact_sum(mpfr_srcptr a, mpfr_srcptr b) {
+  Mpfr_value s(exact_sum_bits(a, b));
+  mpfr_add(s.get(), a, b, MPFR_RNDN);  // exact at that precision
+  return s;
+}
+
+/// x^2, exactly (twice the bits x needs).
+inline Mpfr_value exact_square(mpfr_srcptr x) {
+  Mpfr_value s(std::max<mpfr_prec_t>(2 * mpfr_min_prec(x), MPFR_PREC_MIN));
+  mpfr_sqr(s.get(), x, MPFR_RNDN);
+  return s;
+}
+
+/// A double as an MPFR value, exactly. \pre finite.
+inline Mpfr_value exact_mpfr(double v) { return Mpfr_value(std::numeric_limits<double>::digits, v); }
+
+/// The sum of the squares of the differences a_i - b_i of doubles, exactly:
+/// every precision sized from the exponents of the values, however far apart
+/// (a fixed precision is not enough: (2^500 + 2^-1074)^2 spans 3148 bits).
+/// \pre finite values; the caller holds a Default_fp_environment (MPFR reads
+/// doubles with floating-point instructions).
+inline Mpfr_value exact_sum_of_squared_differences(std::span<const std::array<double, 2>> pairs) {
+  Mpfr_value sum(MPFR_PREC_MIN);
+  mpfr_set_zero(sum.get(), 1);
+  for (const auto& [a, b] : pairs) {
+    const Mpfr_value x = exact_mpfr(a), y = exact_mpfr(b);
+    Mpfr_value difference(exact_sum_bits(x.get(), y.get()));
+    mpfr_sub(difference.get(), x.get(), y.get(), MPFR_RNDN);
+    sum = exact_sum(sum.get(), exact_square(difference.get()).get());
+  }
+  return sum;
+}
+
+}  // namespace internal
+
+/// sqrt(x^2 + y^2 + z^2) rounded upward, in every floating-point
+/// environment. In double with a relative margin of 2^-50 when every nonzero
+/// |component| lies in [2^-500, 2^500] (at most 4 roundings, relative error
+/// < 2.5 u, no underflow or overflow); otherwise from the exact sum of
+/// squares in MPFR (internal::exact_sum_of_squared_differences).
 inline double norm_up(double x, double y, double z = 0) {
-  const auto in_range = [](double v) { return v == 0 || (std::abs(v) >= 0x1p-500 && std::abs(v) <= 0x1p500); };
-  if (in_range(x) && in_range(y) && in_range(z)) return std::sqrt(x * x + y * y + z * z) * (1 + 0x1p-50);
-  Mpfr_value s(2200), t(2200);  // 2200 bits: squares and sums of doubles are exact
-  mpfr_set_d(s.get(), x, MPFR_RNDN), mpfr_sqr(s.get(), s.get(), MPFR_RNDN);
-  mpfr_set_d(t.get(), y, MPFR_RNDN), mpfr_sqr(t.get(), t.get(), MPFR_RNDN), mpfr_add(s.get(), s.get(), t.get(), MPFR_RNDN);
-  mpfr_set_d(t.get(), z, MPFR_RNDN), mpfr_sqr(t.get(), t.get(), MPFR_RNDN), mpfr_add(s.get(), s.get(), t.get(), MPFR_RNDN);
-  mpfr_sqrt(s.get(), s.get(), MPFR_RNDU);
-  return round_mpfr<double>(s.get(), Rounding::upward);
+  return internal::in_default_fp_environment([&] {
+    const auto in_range = [](double v) { return v == 0 || (std::abs(v) >= 0x1p-500 && std::abs(v) <= 0x1p500); };
+    if (in_range(x) && in_range(y) && in_range(z)) return std::sqrt(x * x + y * y + z * z) * (1 + 0x1p-50);
+    const std::array<std::array<double, 2>, 3> components{{{x, 0.0}, {y, 0.0}, {z, 0.0}}};
+    const Mpfr_value s = internal::exact_sum_of_squared_differences(components);
+    Mpfr_value root(std::max<mpfr_prec_t>(s.precision(), 64));  // not fewer bits than the double it becomes
+    mpfr_sqrt(root.get(), s.get(), MPFR_RNDU);
+    return round_mpfr<double>(root.get(), Rounding::upward);
+  });
 }
 
 }  // namespace relgeo

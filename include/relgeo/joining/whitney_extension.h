@@ -354,15 +354,16 @@ class Whitney_extension {
   Whitney_value choose_exactly(const Point_2<double>& p, Whitney_value v) const {
     v.fallback = true;
     constexpr mpfr_prec_t bits = 256;
-    Mpfr_value l_hi(bits), u_lo(bits), l_lo(bits), u_hi(bits), dx(2200), dy(2200), d_lo(bits), d_hi(bits), t(bits);
+    Mpfr_value l_hi(bits), u_lo(bits), l_lo(bits), u_hi(bits), d_lo(bits), d_hi(bits), t(bits);
     mpfr_set_inf(l_hi.get(), -1), mpfr_set_inf(l_lo.get(), -1), mpfr_set_inf(u_lo.get(), 1), mpfr_set_inf(u_hi.get(), 1);
     for (std::uint32_t i = 0; i < size(); ++i) {
-      // Exact squared distance (2200 bits hold every square and sum of doubles).
-      mpfr_set_d(dx.get(), p.x, MPFR_RNDN), mpfr_sub_d(dx.get(), dx.get(), qx_[i], MPFR_RNDN);
-      mpfr_set_d(dy.get(), p.y, MPFR_RNDN), mpfr_sub_d(dy.get(), dy.get(), qy_[i], MPFR_RNDN);
-      mpfr_sqr(dx.get(), dx.get(), MPFR_RNDN), mpfr_sqr(dy.get(), dy.get(), MPFR_RNDN);
-      mpfr_add(dx.get(), dx.get(), dy.get(), MPFR_RNDN);
-      mpfr_sqrt(d_lo.get(), dx.get(), MPFR_RNDD), mpfr_sqrt(d_hi.get(), dx.get(), MPFR_RNDU);
+      // The exact squared distance, its precision sized from the exponents:
+      // a fixed 2200 bits (before) rounded it when the coordinates' bits span
+      // more than 1100 (a sample at 2^400 and a point at 2^-1074), so d_lo
+      // and d_hi were not certainly bounds (doc/joining.md).
+      const std::array<std::array<double, 2>, 2> differences{{{p.x, qx_[i]}, {p.y, qy_[i]}}};
+      const Mpfr_value squared = internal::exact_sum_of_squared_differences(differences);
+      mpfr_sqrt(d_lo.get(), squared.get(), MPFR_RNDD), mpfr_sqrt(d_hi.get(), squared.get(), MPFR_RNDU);
       const double e = samples_[i].e;
       // upper bound of e - L d: e - RD(L d_lo) rounded up; lower bound: e - RU(L d_hi) rounded down.
       mpfr_mul_d(t.get(), d_lo.get(), slope_, MPFR_RNDD), mpfr_d_sub(t.get(), e, t.get(), MPFR_RNDU);

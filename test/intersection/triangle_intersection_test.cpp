@@ -14,6 +14,7 @@
 
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel.h"
+#include "support/undecided_order_kernel.h"
 
 namespace relgeo {
 namespace {
@@ -194,6 +195,46 @@ TEST(TriangleIntersectionFailsafe, AnAmbiguousVertexIsMovedAndReported) {
                                      Filtered_exact_kernel{});
   EXPECT_EQ(e.kind, Kind::disjoint);  // exactly: b's vertex is above the plane, the rest too
   EXPECT_TRUE(e.perturbations.empty());
+}
+
+// Under a kernel that never orders two distinct points (a certified kernel
+// may doubt anything) the answer must be the exact one or `undecided`, never
+// a definite one read from an uncertain comparison (before: a coplanar
+// overlap's extreme points, and whether two clipped vertices are one, were
+// taken from such comparisons: edge-touching triangles came out as touching
+// at a vertex).
+TEST(TriangleIntersectionUncertainty, AnUncertainOrderIsNeverReadAsADefiniteOne) {
+  const test::Undecided_order_kernel k;
+  const Filtered_exact_kernel exact;
+  std::size_t undecided = 0, decided = 0;
+  std::array<int, 3> pa{0, 1, 2};
+  for (const auto& c : configurations()) {
+    do {
+      for (int swap = 0; swap < 2; ++swap) {
+        const std::array<int, 3> id{0, 1, 2};
+        const T3& first = swap ? c.b : c.a;
+        const T3& second = swap ? c.a : c.b;
+        const auto r = intersect_triangles(triangle(k, first, pa), triangle(k, second, id), k);
+        if (r.kind == Kind::undecided) {
+          ++undecided;
+          continue;
+        }
+        ++decided;
+        const auto e = intersect_triangles(triangle(exact, first, pa), triangle(exact, second, id), exact);
+        ASSERT_EQ(r.kind, e.kind) << c.name;
+        ASSERT_EQ(r.points.size(), e.points.size()) << c.name;
+        for (std::size_t i = 0; i < r.points.size(); ++i) {
+          const bool found = std::any_of(e.points.begin(), e.points.end(), [&](const auto& q) {
+            return exact.compare_xyz_3_object()(q, r.points[i]) == Certified_sign::zero;
+          });
+          EXPECT_TRUE(found) << c.name << ": point " << i;
+        }
+      }
+    } while (std::next_permutation(pa.begin(), pa.end()));
+  }
+  std::printf("[ undecided-order ] %zu decided (as the exact kernel), %zu undecided\n", decided, undecided);
+  EXPECT_GT(undecided, 0u);
+  EXPECT_GT(decided, 0u);  // the configurations that need no order (disjoint, a single point)
 }
 
 }  // namespace

@@ -249,14 +249,15 @@ class Triangle_intersector {
       return;
     }
     const auto ca = cut(a, sa, b), cb = cut(b, sb, a);
-    if (!ca || !cb) {
-      r.kind = Triangle_intersection_kind::undecided;  // an LPI point the kernel could not build
+    if (!ca || !cb) {  // an LPI point the kernel could not build, or ends it could not order
+      r.kind = Triangle_intersection_kind::undecided;
       return;
     }
     overlap(*ca, *cb, r);
   }
 
-  // The cut of triangle t (signs s against the other plane, through o).
+  // The cut of triangle t (signs s against the other plane, through o);
+  // nullopt when the kernel cannot build or order its ends.
   std::optional<Cut> cut(const Triangle& t, const std::array<Certified_sign, 3>& s, const Triangle& o) const {
     Cut c;
     int zeros = 0;
@@ -277,8 +278,11 @@ class Triangle_intersector {
       if (!p) return std::nullopt;
       c.ends.push_back({*p, {Triangle_location::Kind::edge, static_cast<std::uint8_t>(i)}});
     }
-    if (c.ends.size() == 2 && compare_(c.ends[0].point, c.ends[1].point) == Certified_sign::positive)
-      std::swap(c.ends[0], c.ends[1]);
+    if (c.ends.size() == 2) {
+      const Certified_sign order = compare_(c.ends[0].point, c.ends[1].point);
+      if (!is_certain(order)) return std::nullopt;  // overlap() needs the ends in order along L
+      if (order == Certified_sign::positive) std::swap(c.ends[0], c.ends[1]);
+    }
     return c;
   }
 
@@ -494,37 +498,41 @@ class Triangle_intersector {
   void finish_coplanar(const boost::container::static_vector<Polygon_vertex, 9>& poly, const std::array<IP, 3>& A,
                        const std::array<IP, 3>& B, Certified_sign sigma, Certified_sign sigma_b, int axis,
                        Result& r) const {
-    // Distinct points only (a vertex on a clipping line can repeat).
+    // Distinct points only (a vertex on a clipping line can repeat). Every
+    // comparison below must be decided: an uncertain one read as "different"
+    // would keep a point twice, or take the wrong extreme of a segment.
+    const auto undecided = [&r] { r.kind = Triangle_intersection_kind::undecided; };
     boost::container::static_vector<IP, 9> pts;
     for (const auto& v : poly) {
       bool repeated = false;
-      for (const auto& q : pts) repeated = repeated || compare_(q, v.point) == Certified_sign::zero;
+      for (const auto& q : pts) {
+        const Certified_sign same = compare_(q, v.point);
+        if (!is_certain(same)) return undecided();
+        repeated = repeated || same == Certified_sign::zero;
+      }
       if (!repeated) pts.push_back(v.point);
     }
     if (pts.empty()) {
       r.kind = Triangle_intersection_kind::disjoint;
       return;
     }
-    if (pts.size() > r.points.capacity()) {  // more than two triangles' overlap can have: inconsistent signs
-      r.kind = Triangle_intersection_kind::undecided;
-      return;
-    }
+    if (pts.size() > r.points.capacity()) return undecided();  // more than two triangles' overlap can have: inconsistent signs
     // Locations (and the input vertex as the representative of a vertex).
     boost::container::static_vector<std::array<Triangle_location, 2>, 9> locs;
     for (auto& p : pts) {
       const auto la_ = locate(A, p, sigma, axis), lb_ = locate(B, p, sigma_b, axis);
-      if (!la_ || !lb_) {
-        r.kind = Triangle_intersection_kind::undecided;
-        return;
-      }
+      if (!la_ || !lb_) return undecided();
       const Triangle_location la = *la_, lb = *lb_;
       if (la.kind == Triangle_location::Kind::vertex) p = A[la.index];
       else if (lb.kind == Triangle_location::Kind::vertex) p = B[lb.index];
       locs.push_back({la, lb});
     }
     bool collinear = true;
-    for (std::size_t i = 2; i < pts.size() && collinear; ++i)
-      collinear = orient2_(pts[0], pts[1], pts[i], axis) == Certified_sign::zero;
+    for (std::size_t i = 2; i < pts.size() && collinear; ++i) {
+      const Certified_sign o = orient2_(pts[0], pts[1], pts[i], axis);
+      if (!is_certain(o)) return undecided();
+      collinear = o == Certified_sign::zero;
+    }
     if (pts.size() >= 3 && !collinear) {
       r.kind = Triangle_intersection_kind::coplanar_overlap;
       for (std::size_t i = 0; i < pts.size(); ++i) r.points.push_back(pts[i]), r.locations.push_back(locs[i]);
@@ -533,8 +541,10 @@ class Triangle_intersector {
     // A point or a segment: its extreme points along the line.
     std::size_t lo = 0, hi = 0;
     for (std::size_t i = 1; i < pts.size(); ++i) {
-      if (compare_(pts[i], pts[lo]) == Certified_sign::negative) lo = i;
-      if (compare_(pts[i], pts[hi]) == Certified_sign::positive) hi = i;
+      const Certified_sign below = compare_(pts[i], pts[lo]), above = compare_(pts[i], pts[hi]);
+      if (!is_certain(below) || !is_certain(above)) return undecided();
+      if (below == Certified_sign::negative) lo = i;
+      if (above == Certified_sign::positive) hi = i;
     }
     r.points.push_back(pts[lo]);
     r.locations.push_back(locs[lo]);

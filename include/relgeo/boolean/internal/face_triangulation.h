@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/core/certified_sort.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::internal {
@@ -119,14 +120,13 @@ class Face_triangulator {
       // Along the edge from `from` to `to`: compare_xyz orders a line's points
       // monotonically, increasing or decreasing with the direction.
       const Certified_sign dir = compare_(points_[from], points_[to]);
-      if (!is_certain(dir) || dir == Certified_sign::zero) return failed("a face edge is degenerate");
-      bool undecided = false;
-      std::sort(pts.begin(), pts.end(), [&](Index a, Index b) {
+      if (!is_certain(dir)) return failed("undecided direction of a face edge");
+      if (dir == Certified_sign::zero) return failed("a face edge is degenerate");
+      const auto along_edge = [&](Index a, Index b) {
         const Certified_sign c = compare_(points_[a], points_[b]);
-        undecided = undecided || !is_certain(c);
-        return dir == Certified_sign::negative ? c == Certified_sign::negative : c == Certified_sign::positive;
-      });
-      if (undecided) return failed("undecided order of points on an edge");
+        return dir == Certified_sign::negative ? c : -c;
+      };
+      if (!certified_sort(pts.begin(), pts.end(), along_edge)) return failed("undecided order of points on an edge");
       pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
       int a = e;  // local index of `from`
       for (Index g : pts) {
@@ -230,8 +230,10 @@ class Face_triangulator {
       const Certified_sign o = orient(a, b, p);
       if (!is_certain(o)) return failed("undecided position of a point against a segment");
       side_[p] = o;
-      if (o != Certified_sign::zero || !strictly_between(a, b, p)) continue;
-      return insert_segment(a, p) && insert_segment(p, b);
+      if (o != Certified_sign::zero) continue;
+      const int between = strictly_between(a, b, p);
+      if (between < 0) return failed("undecided order of points on a segment");
+      if (between == 1) return insert_segment(a, p) && insert_segment(p, b);
     }
     // Sloan's queue: the edges crossing ab; an edge whose quadrilateral is
     // not convex goes to the back, a flipped one whose new diagonal still
@@ -288,10 +290,13 @@ class Face_triangulator {
     return false;
   }
 
-  bool strictly_between(int a, int b, int p) {
+  // Whether p (collinear with a and b) lies strictly between them: 1 yes,
+  // 0 no, -1 undecided.
+  int strictly_between(int a, int b, int p) {
     const Certified_sign ap = compare_(points_[global_[a]], points_[global_[p]]);
     const Certified_sign pb = compare_(points_[global_[p]], points_[global_[b]]);
-    return is_certain(ap) && ap != Certified_sign::zero && ap == pb;
+    if (!is_certain(ap) || !is_certain(pb)) return -1;
+    return ap != Certified_sign::zero && ap == pb ? 1 : 0;
   }
 
   // 1 if segment xy crosses segment ab in both interiors, 0 if not, -1

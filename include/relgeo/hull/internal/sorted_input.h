@@ -11,6 +11,7 @@
 #include <boost/sort/pdqsort/pdqsort.hpp>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/core/certified_sort.h"
 #include "relgeo/hull/internal/hull_input.h"
 #include "relgeo/hull/internal/interior_prefilter.h"
 #include "relgeo/hull/internal/position_lookup.h"
@@ -62,23 +63,18 @@ class Sorted_input {
       sorted_.erase(std::unique(sorted_.begin(), sorted_.end()), sorted_.end());
     } else {
       const auto compare = k.compare_xy_2_object();
-      struct Undecidable {};
-      auto decided = [&](std::size_t a, std::size_t b) {
-        const Certified_sign s = compare(points[a], points[b]);
-        if (!is_certain(s)) throw Undecidable{};
-        return s;
-      };
+      const auto by_point = [&](std::size_t a, std::size_t b) { return compare(points[a], points[b]); };
       for (std::size_t i = 0; i < points.size(); ++i)
         if (!keep || keep->test(i)) order_.push_back(i);
-      try {
-        std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
-          return decided(a, b) == Certified_sign::negative;
-        });
-        std::size_t kept = 0;
-        for (std::size_t i : order_)
-          if (kept == 0 || decided(order_[kept - 1], i) != Certified_sign::zero) order_[kept++] = i;
-        order_.resize(kept);
-      } catch (const Undecidable&) {
+      bool decided = certified_sort(order_.begin(), order_.end(), by_point, /*stable=*/true);
+      std::size_t kept = 0;
+      for (std::size_t j = 0; decided && j < order_.size(); ++j) {
+        const Certified_sign s = kept == 0 ? Certified_sign::positive : by_point(order_[kept - 1], order_[j]);
+        decided = is_certain(s);
+        if (s != Certified_sign::zero) order_[kept++] = order_[j];
+      }
+      order_.resize(kept);
+      if (!decided) {
         undecidable_ = true;
         order_.clear();
         if (undecided) ++*undecided;

@@ -97,7 +97,7 @@ sanitized_suites=(
   relgeo_hull_error_tests relgeo_hull_kernel_tests relgeo_hull_property_tests
   relgeo_linear_tests relgeo_curves_tests relgeo_extrusion_tests
   relgeo_mesh_tests relgeo_mesh_solid_tests relgeo_subdivision_tests relgeo_subdivision_limit_tests
-  relgeo_subdivision_bounds_tests relgeo_intersection_tests relgeo_boolean_tests
+  relgeo_subdivision_bounds_tests relgeo_intersection_tests relgeo_boolean_tests relgeo_boolean_environment_tests
   relgeo_subdivision_boolean_tests relgeo_limit_embedding_tests
 )
 

@@ -32,6 +32,17 @@ inline double volume(const Mesh& m) {
   return v / 6;
 }
 
+/// The tetrahedron with corners v, outward oriented (the sign of its
+/// volume in doubles: corners whose orientation rounding cannot flip).
+inline Mesh tetrahedron(const std::array<Point_3<double>, 4>& v) {
+  Mesh m;
+  m.vertices.assign(v.begin(), v.end());
+  m.faces = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  if (volume(m) < 0)
+    for (auto& f : m.faces) std::swap(f[1], f[2]);
+  return m;
+}
+
 /// V - E + F of a mesh (edges counted once).
 inline long euler_characteristic(const Mesh& m) {
   std::vector<std::pair<Index, Index>> e;

@@ -7,15 +7,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cfenv>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "boolean_inputs.h"
 #include "relgeo/boolean/subdivision_boolean.h"
 #include "relgeo/kernel.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/subdivision/loop_features.h"
+#include "support/fp_environments.h"
 
 namespace relgeo::test {
 namespace {
@@ -123,6 +126,36 @@ TEST(SubdivisionBoolean, EveryOperationGivesAValidControlMesh) {
     expect_curves_tagged(r);
     expect_valid_control_mesh(r);
     EXPECT_LT(r.distance_to_polyhedral.hausdorff(), 0.05) << to_string(op);
+  }
+}
+
+// Under a certified kernel the result does not depend on the caller's
+// floating-point environment (the limit meshes, mapping and fitting compute
+// in doubles, in the default environment), while the limit mesh computed in
+// each environment itself changes: the environment reaches this arithmetic.
+TEST(SubdivisionBoolean, TheResultDoesNotDependOnTheFloatingPointEnvironment) {
+  const Subdivision_boolean_options options{.fit = true};
+  const Mesh a = sphere_a(), b = sphere_b();  // built here, in the default environment
+  const auto reference = subdivision_boolean(a, b, Op::union_of, 1, Filtered_exact_kernel{}, options);
+  ASSERT_TRUE(reference.ok()) << reference.failure;
+  const Mesh limit = loop_limit_mesh(b, 1);
+  for (const auto& setting : test::non_default_fp_environments()) {
+    const auto [r, limit_here] = [&] {
+      const test::Scoped_fp_environment environment(setting);
+      return std::pair{subdivision_boolean(a, b, Op::union_of, 1, Filtered_exact_kernel{}, options),
+                       loop_limit_mesh(b, 1)};
+    }();
+    ASSERT_TRUE(r.ok()) << setting.name << ": " << r.failure;
+    // Compared as booleans: a mismatch of thousands of points prints nothing useful.
+    EXPECT_TRUE(r.polyhedral.mesh.vertices == reference.polyhedral.mesh.vertices) << setting.name;
+    EXPECT_TRUE(r.polyhedral.mesh.faces == reference.polyhedral.mesh.faces) << setting.name;
+    EXPECT_TRUE(r.control.vertices == reference.control.vertices) << setting.name;
+    EXPECT_TRUE(r.control.faces == reference.control.faces) << setting.name;
+    EXPECT_EQ(r.fitted, reference.fitted) << setting.name;
+    EXPECT_EQ(r.validation.summary(), reference.validation.summary()) << setting.name;
+    if (setting.rounding != FE_TONEAREST) {  // directed rounding moves the limit points computed in it
+      EXPECT_FALSE(limit_here.vertices == limit.vertices) << setting.name;
+    }
   }
 }
 

@@ -124,7 +124,8 @@ struct Boolean_result {
   Status status = Status::ok;
   /// Why it failed (empty when ok): the phase and what could not be decided.
   std::string failure;
-  /// Face pairs the kernel could not decide (fail-safe and interval kernels).
+  /// Face pairs the kernel could not decide (fail-safe and interval kernels;
+  /// no vertex is moved to decide them: doc/boolean.md, "The kernels").
   std::vector<std::pair<Index, Index>> undecided_pairs;
   /// The output mesh in doubles (each vertex the nearest the kernel can
   /// give), the intersection curves tagged as creases. Its vertices are the
@@ -143,10 +144,6 @@ struct Boolean_result {
   std::vector<Face_origin> provenance;
   /// Per output vertex: where it lies on A (index 0) and on B (index 1).
   std::vector<std::array<Surface_location, 2>> vertex_locations;
-  /// Fail-safe perturbations (thesis eq. 5.3) applied to decide pairs:
-  /// the largest rho, and how many.
-  double largest_perturbation = 0;
-  std::size_t perturbations = 0;
   Boolean_counts counts;
   Boolean_timing time;
   /// The validation report of `mesh` (Boolean_options::validate_output;

@@ -44,6 +44,8 @@
 #include "relgeo/boolean/internal/face_triangulation.h"
 #include "relgeo/boolean/internal/labelling.h"
 #include "relgeo/boolean/internal/point_table.h"
+#include "relgeo/core/certified_sort.h"
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
@@ -68,6 +70,12 @@ class Boolean_engine {
       : mesh_{&a, &b}, op_(op), k_(k), options_(o), points_(k, mesh_) {}
 
   Result run() {
+    // A certified kernel's Boolean is the same in every floating-point
+    // environment: its predicates and the face hierarchy hold their own
+    // scopes, and this one covers the engine's own double arithmetic (the
+    // projection axes and rays it chooses). A naive kernel computes in the
+    // caller's environment.
+    const Default_fp_environment_if<K::is_certified> environment;
     Result r;
     Stopwatch clock;
     if (options_.check_operands) {
@@ -186,14 +194,14 @@ class Boolean_engine {
       for (const Face_pair& pair : pairs) {
         current = pair;
         const auto [fa, fb] = pair;
-        const auto x = intersect_triangles(triangle(*mesh_[0], fa), triangle(*mesh_[1], fb), k_);
+        // No fail-safe perturbation (thesis eq. 5.3) here: a vertex moved
+        // for one pair and not for the others would make an arrangement of
+        // no operand at all (doc/boolean.md, "The kernels").
+        const auto x = intersect_triangles(triangle(*mesh_[0], fa), triangle(*mesh_[1], fb), k_,
+                                           {.perturb_ambiguous_vertices = false});
         if (x.kind == Triangle_intersection_kind::undecided) {
           r.undecided_pairs.emplace_back(fa, fb);
           continue;
-        }
-        if (!x.perturbations.empty()) {
-          ++r.perturbations;
-          for (const auto& p : x.perturbations) r.largest_perturbation = std::max(r.largest_perturbation, p.rho);
         }
         if (x.kind == Triangle_intersection_kind::disjoint) continue;
         ++r.counts.intersecting_pairs;
@@ -223,7 +231,10 @@ class Boolean_engine {
                   " face pairs the kernel cannot decide (see undecided_pairs)";
       return false;
     }
-    merge_equal_points();
+    if (!merge_equal_points()) {
+      r.failure = "narrow phase: the kernel cannot order the new points (an uncertain compare_xyz)";
+      return false;
+    }
     for (Index p = points_.input_count(); p < points_.size(); ++p)
       r.counts.new_vertices += find(p) == p;
     return true;
@@ -290,15 +301,21 @@ class Boolean_engine {
   // operand that crosses itself, when the checks are off) become one: sorted
   // by the exact lexicographic order. After the cells, the points compared
   // are distinct, which the kernels' filters decide without exact arithmetic.
-  void merge_equal_points() {
+  // False when the kernel cannot order two of them (fail-safe, interval).
+  bool merge_equal_points() {
     std::vector<Index> ids;
     for (const auto& l : located_) ids.push_back(find(l.point));
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     const auto compare = k_.compare_xyz_3_object();
-    std::sort(ids.begin(), ids.end(), [&](Index a, Index b) { return compare(points_[a], points_[b]) == Certified_sign::negative; });
-    for (std::size_t i = 1; i < ids.size(); ++i)
-      if (compare(points_[ids[i - 1]], points_[ids[i]]) == Certified_sign::zero) unite(ids[i - 1], ids[i]);
+    const auto by_point = [&](Index a, Index b) { return compare(points_[a], points_[b]); };
+    if (!certified_sort(ids.begin(), ids.end(), by_point)) return false;
+    for (std::size_t i = 1; i < ids.size(); ++i) {
+      const Certified_sign s = by_point(ids[i - 1], ids[i]);
+      if (!is_certain(s)) return false;
+      if (s == Certified_sign::zero) unite(ids[i - 1], ids[i]);
+    }
+    return true;
   }
 
   // ---- 4. retriangulation ---------------------------------------------------------
@@ -724,8 +741,6 @@ Boolean_result<K> with_exact_points(Boolean_result<Filtered_exact_kernel>&& r) {
   out.rounding_error = r.rounding_error;
   out.provenance = std::move(r.provenance);
   out.vertex_locations = std::move(r.vertex_locations);
-  out.largest_perturbation = r.largest_perturbation;
-  out.perturbations = r.perturbations;
   out.counts = r.counts;
   out.time = r.time;
   out.validation = std::move(r.validation);
@@ -749,7 +764,8 @@ Boolean_result<K> with_exact_points(Boolean_result<Filtered_exact_kernel>&& r) {
 /// doubles (rounding_error says how far; rounding can in rare cases make the
 /// rounded mesh self-intersect: validate it). Fail-safe and interval kernels
 /// give the same result or a failure naming the face pairs they cannot
-/// decide; naive kernels give what their arithmetic gives, never a crash.
+/// decide (no vertex is moved: doc/boolean.md, "The kernels"); naive
+/// kernels give what their arithmetic gives, never a crash.
 /// \throws Invalid_operand when an operand is open, non-manifold,
 /// inconsistently oriented, degenerate, non-finite or self-intersecting
 /// (options.check_operands), before any other work.

@@ -50,6 +50,7 @@
 #include "relgeo/boolean/mesh_boolean.h"
 #include "relgeo/boolean/subdivision_boolean_types.h"
 #include "relgeo/boolean/subdivision_validation.h"
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/mesh/point_mesh_distance.h"
 #include "relgeo/mesh/validity.h"
 #include "relgeo/subdivision/limit_evaluation.h"
@@ -143,6 +144,11 @@ Subdivision_boolean_result<K> subdivision_boolean(const Triangle_mesh<Point_3<do
   if (op == Boolean_operation::symmetric_difference)
     throw Invalid_input("subdivision_boolean: the symmetric difference touches itself along the curves (not a "
                         "manifold: no Loop control mesh represents it); compute A - B and B - A separately");
+  // Under a certified kernel the result does not depend on the caller's
+  // floating-point environment: the limit meshes, the mapping and the fitting
+  // compute in doubles, here in the default environment (the Boolean and the
+  // validation hold their own scopes).
+  const Default_fp_environment_if<K::is_certified> environment;
   Subdivision_boolean_result<K> r;
   r.level = levels;
   auto clock = std::chrono::steady_clock::now();

@@ -23,6 +23,18 @@
 // in list order, so the output — pairs and their order — does not depend on
 // the number of threads.
 //
+// The floating-point environment. The boxes are decided by comparisons, a
+// min/max per node and a rounding of doubles to floats; under
+// denormals-are-zero a comparison reads two different subnormals as equal
+// (so a node's min could keep the larger of two subnormal bounds), and under
+// flush-to-zero a double rounded to a float subnormal comes out as 0 or below
+// it. Either made a box miss a face it must contain (found: two crossing
+// cubes of side 2^-134 passed as disjoint). So every entry point (building,
+// face_boxes, each query) holds a Default_fp_environment: the hierarchy and
+// every answer are the same whatever environment the caller set. Callbacks
+// run in that scope too (the default environment, also on TBB's workers,
+// whose arenas take the settings of the thread that creates them).
+//
 // Measured against CGAL's box_intersection_d and AABB_tree in
 // benchmark/mesh/face_bvh_benchmark.cpp (doc/mesh.md, "Self-intersection and
 // solid validation").
@@ -44,6 +56,7 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/interval.h"
 #include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/point.h"
@@ -101,6 +114,7 @@ struct Face_pair {
 /// offending face or vertex, at most 100 listed) when a box cannot be formed.
 template <class P>
 std::vector<Box_3> face_boxes(const Triangle_mesh<P>& m) {
+  const Default_fp_environment environment;  // min/max of subnormal bounds (see the file comment)
   using A = internal::Point_access<P>;
   using FT = typename A::FT;
   const std::size_t nv = m.vertices.size();
@@ -172,6 +186,7 @@ class Face_bvh {
   /// From one box per face. \throws Precondition_violation when a box is
   /// empty or not finite (NaN, infinite). Complexity O(n log n).
   explicit Face_bvh(std::span<const Box_3> boxes, const Face_bvh_options& options = {}) {
+    const Default_fp_environment environment;
     build_tree(boxes, options);
     boxes_.resize(size_);
     for (std::size_t i = 0; i < size_; ++i) boxes_[i] = boxes[faces_[i]];
@@ -181,6 +196,7 @@ class Face_bvh {
   /// bad indices or non-finite coordinates).
   template <class P>
   explicit Face_bvh(const Triangle_mesh<P>& m, const Face_bvh_options& options = {}) {
+    const Default_fp_environment environment;
     std::vector<Box_3> boxes = face_boxes(m);
     build_tree(boxes, options);
     // The boxes put in leaf order where they are: one array of them at a
@@ -205,12 +221,14 @@ class Face_bvh {
   /// file comment.
   template <class F>
   void for_each_overlapping_pair(const Face_bvh& other, F&& f) const {
+    const Default_fp_environment environment;
     traverse_items<false>(other, [&](Index a, Index b) { f(a, b); });
   }
   /// f(f, g), f < g, for every pair of faces of this hierarchy whose boxes
   /// overlap (a face is not paired with itself).
   template <class F>
   void for_each_overlapping_pair(F&& f) const {
+    const Default_fp_environment environment;
     traverse_items<true>(*this, [&](Index a, Index b) { f(a, b); });
   }
 
@@ -250,10 +268,13 @@ class Face_bvh {
   /// little more on small ones: doc/mesh.md, "Broad phase").
   /// \pre no box is NaN (an empty box meets nothing).
   std::vector<Face_pair> overlapping_pairs_with_boxes(std::span<const Box_3> queries, int threads = 1) const {
+    const Default_fp_environment environment;
     const auto search = [&](std::size_t begin, std::size_t end, std::vector<Face_pair>& out) {
       for (std::size_t i = begin; i < end; ++i)
-        if (do_overlap(queries[i], bounds_))
-          for_each_face_in_box(queries[i], [&](Index f) { out.push_back({static_cast<Index>(i), f}); });
+        if (do_overlap(queries[i], bounds_)) {
+          auto emit = [&](Index f) { out.push_back({static_cast<Index>(i), f}); };
+          query([&](const Box_3& b) { return do_overlap(b, queries[i]); }, emit);
+        }
     };
     std::vector<Face_pair> result;
     if (internal::thread_count(threads) <= 1) {
@@ -274,6 +295,7 @@ class Face_bvh {
   /// f(face) for every face whose box overlaps q.
   template <class F>
   void for_each_face_in_box(const Box_3& q, F&& f) const {
+    const Default_fp_environment environment;
     query([&](const Box_3& b) { return do_overlap(b, q); }, f);
   }
   /// f(face) for every face whose box the segment [p, q] may meet: every
@@ -284,6 +306,7 @@ class Face_bvh {
   /// \pre finite coordinates, slack >= 0.
   template <class F>
   void for_each_face_on_segment(const Point_3<double>& p, const Point_3<double>& q, F&& f, double slack = 0) const {
+    const Default_fp_environment environment;  // interval slab test
     Linear_query s = linear_query(p, {q.x, q.y, q.z}, true, 1.0);
     s.slack = slack;
     query([&](const Box_3& b) { return s.may_meet(b); }, f);
@@ -291,6 +314,7 @@ class Face_bvh {
   /// The same for the ray from `origin` along `direction` (not 0).
   template <class F>
   void for_each_face_on_ray(const Point_3<double>& origin, const Point_3<double>& direction, F&& f) const {
+    const Default_fp_environment environment;
     const Linear_query s =
         linear_query(origin, {direction.x, direction.y, direction.z}, false, std::numeric_limits<double>::infinity());
     query([&](const Box_3& b) { return s.may_meet(b); }, f);
@@ -303,6 +327,7 @@ class Face_bvh {
   /// grow with p's distance to the mesh, unlike growing box queries.
   template <class F>
   std::pair<Index, double> nearest_face(const Point_3<double>& p, F&& squared_distance) const {
+    const Default_fp_environment environment;  // the box distances are rounded down a little
     std::pair<Index, double> best{invalid_index, std::numeric_limits<double>::infinity()};
     if (size_ == 0) return best;
     const double q[3] = {p.x, p.y, p.z};
@@ -673,6 +698,7 @@ class Face_bvh {
 
   template <bool Self, class R, class F>
   std::vector<R> collect(const Face_bvh& other, F& f, int threads, std::size_t* overlapping) const {
+    const Default_fp_environment environment;
     const std::vector<Node_pair> items = frontier<Self>(other);
     std::vector<R> result;
     if (internal::thread_count(threads) <= 1) {

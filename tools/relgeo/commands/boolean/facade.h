@@ -30,8 +30,6 @@ struct Boolean_run {
   std::vector<std::pair<Index, Index>> undecided_pairs;
   Mesh_double output;
   double rounding_error = 0;
-  std::size_t perturbations = 0;
-  double largest_perturbation = 0;
   std::vector<Face_origin> provenance;
   Boolean_counts counts;
   Boolean_timing time;

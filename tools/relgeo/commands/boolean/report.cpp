@@ -33,8 +33,6 @@ io::Json boolean_report_json(const Boolean_report_input& in) {
   j["exact_self_intersecting_pairs"] =
       r.exact_self_intersecting_pairs ? io::Json(*r.exact_self_intersecting_pairs) : io::Json(nullptr);
   j["rounding_error"] = io::json_measure(r.rounding_error);
-  j["perturbations"] = r.perturbations;
-  j["largest_perturbation"] = io::json_measure(r.largest_perturbation);
   j["counts"] = {{"candidate_pairs", r.counts.candidate_pairs},   {"intersecting_pairs", r.counts.intersecting_pairs},
                  {"coplanar_pairs", r.counts.coplanar_pairs},     {"new_vertices", r.counts.new_vertices},
                  {"split_faces", r.counts.split_faces},           {"patches", r.counts.patches}};
@@ -78,10 +76,6 @@ std::string boolean_report_text(const Boolean_report_input& in) {
   }
   std::snprintf(buf, sizeof buf, "%.3g", r.rounding_error);
   s << "rounding error   " << buf << " (largest move of a new vertex to doubles)\n";
-  if (r.perturbations) {
-    std::snprintf(buf, sizeof buf, "%.3g", r.largest_perturbation);
-    s << "perturbations    " << r.perturbations << " pairs (largest rho " << buf << ")\n";
-  }
   s << "pairs            " << r.counts.candidate_pairs << " candidates, " << r.counts.intersecting_pairs << " intersecting ("
     << r.counts.coplanar_pairs << " coplanar); " << r.counts.new_vertices << " new vertices, " << r.counts.split_faces
     << " faces split, " << r.counts.patches << " patches\n";

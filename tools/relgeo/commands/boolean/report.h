@@ -22,7 +22,7 @@ struct Boolean_report_input {
 /// failure, undecided_pairs, operands {a, b: file, vertices, faces, volume},
 /// output {vertices, faces, creases}, validation (io::solid_report_json of
 /// the output's validate_solid report; null when the Boolean failed),
-/// exact_self_intersecting_pairs (exact kernel; else null), rounding_error, perturbations, largest_perturbation, counts
+/// exact_self_intersecting_pairs (exact kernel; else null), rounding_error, counts
 /// {candidate_pairs, intersecting_pairs, coplanar_pairs, new_vertices,
 /// split_faces, patches}, time_s {check, broad_phase, narrow_phase,
 /// retriangulation, labelling, assembly, total, validation}, [oracle {cgal_ok,

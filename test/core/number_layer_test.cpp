@@ -176,6 +176,11 @@ TEST(NumberLayer, NormUpBoundsTheExactNormAtEveryScale) {
   EXPECT_EQ(norm_up(0x1p600, 0x1p-1074), next_up(0x1p600));
   EXPECT_EQ(norm_up(0x1p-1074, 0, 0), 0x1p-1074);
   EXPECT_EQ(norm_up(3 * 0x1p700, 4 * 0x1p700), 5 * 0x1p700);  // exact: the MPFR path rounds a 5 to itself
+  // Non-finite components, as std::hypot (a fuzzing finding of the exact path).
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(norm_up(inf, 1), inf);
+  EXPECT_EQ(norm_up(1, -inf, nan), inf);
+  EXPECT_TRUE(std::isnan(norm_up(nan, 0x1p-1074)));
   std::mt19937_64 rng(20261127);
   const auto value = [&rng] {
     const int e = static_cast<int>(rng() % 2098) - 1074;

@@ -24,6 +24,7 @@
 #include <span>
 #include <type_traits>
 
+#include "relgeo/core/floating_point.h"
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/internal/error_free.h"
 #include "relgeo/core/mpfr_number.h"
@@ -202,8 +203,13 @@ inline Mpfr_value exact_sum_of_squared_differences(std::span<const std::array<do
 /// environment. In double with a relative margin of 2^-50 when every nonzero
 /// |component| lies in [2^-500, 2^500] (at most 4 roundings, relative error
 /// < 2.5 u, no underflow or overflow); otherwise from the exact sum of
-/// squares in MPFR (internal::exact_sum_of_squared_differences).
+/// squares in MPFR (internal::exact_sum_of_squared_differences). As
+/// std::hypot: +inf when a component is infinite, else NaN when one is NaN.
 inline double norm_up(double x, double y, double z = 0) {
+  if (!all_finite(x, y, z)) [[unlikely]] {
+    if (std::isinf(x) || std::isinf(y) || std::isinf(z)) return std::numeric_limits<double>::infinity();
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   return internal::in_default_fp_environment([&] {
     const auto in_range = [](double v) { return v == 0 || (std::abs(v) >= 0x1p-500 && std::abs(v) <= 0x1p500); };
     if (in_range(x) && in_range(y) && in_range(z)) return std::sqrt(x * x + y * y + z * z) * (1 + 0x1p-50);

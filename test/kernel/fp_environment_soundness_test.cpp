@@ -10,6 +10,7 @@
 
 #include "relgeo/analysis/orientation_grid.h"
 #include "relgeo/kernel.h"
+#include "support/exact_oracle.h"
 
 namespace relgeo::test {
 namespace {
@@ -162,13 +163,6 @@ TEST(FpEnvironmentSoundness, ImplicitOrientationOfOppositeSubnormals) {
 // before, they ran in the caller's and, under round-down, the midpoint of
 // (1, 1) and (2^-60, 0) was the point [0.5, 0.5]. Random operands (exponents
 // over the whole range, subnormals included) and the two examples.
-bool encloses(const Interval& i, const mpq_class& v) {
-  if (std::isnan(i.inf()) || std::isnan(i.sup())) return true;  // NaN claims nothing
-  const bool lo_ok = std::isinf(i.inf()) ? i.inf() < 0 : mpq_class(i.inf()) <= v;
-  const bool hi_ok = std::isinf(i.sup()) ? i.sup() > 0 : v <= mpq_class(i.sup());
-  return lo_ok && hi_ok;
-}
-
 TEST(FpEnvironmentSoundness, IntervalConstructionsEncloseTheExactValue) {
   const Interval_kernel k;
   const auto point2 = k.construct_point_2_object();

@@ -9,16 +9,13 @@
 #include <random>
 
 #include "relgeo/core/interval.h"
+#include "support/exact_oracle.h"
 
 namespace relgeo {
 namespace {
 
-bool encloses(const Interval& i, const mpq_class& v) {
-  if (std::isnan(i.inf()) || std::isnan(i.sup())) return true;  // NaN claims nothing
-  const bool lo_ok = std::isinf(i.inf()) ? i.inf() < 0 : mpq_class(i.inf()) <= v;
-  const bool hi_ok = std::isinf(i.sup()) ? i.sup() > 0 : v <= mpq_class(i.sup());
-  return lo_ok && hi_ok;
-}
+using test::encloses;
+
 
 double random_double(std::mt19937_64& g) {
   // Random sign, exponent in [-1074, 1000] and mantissa: covers subnormals.

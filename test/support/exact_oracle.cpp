@@ -2,6 +2,10 @@
 
 #include <gmpxx.h>
 
+#include <cmath>
+
+#include "relgeo/core/dyadic.h"
+
 namespace relgeo::test {
 namespace {
 
@@ -59,6 +63,13 @@ Certified_sign oracle_compare_xy(double x1, double y1, double x2, double y2) {
   const int cx = cmp(mpq_class(x1), mpq_class(x2));
   const int c = cx != 0 ? cx : cmp(mpq_class(y1), mpq_class(y2));
   return c > 0 ? Certified_sign::positive : (c < 0 ? Certified_sign::negative : Certified_sign::zero);
+}
+
+bool encloses(const Interval& i, const mpq_class& v) {
+  if (std::isnan(i.inf()) || std::isnan(i.sup())) return true;  // NaN claims nothing
+  const bool lo_ok = std::isinf(i.inf()) ? i.inf() < 0 : exact_rational(i.inf()) <= v;
+  const bool hi_ok = std::isinf(i.sup()) ? i.sup() > 0 : v <= exact_rational(i.sup());
+  return lo_ok && hi_ok;
 }
 
 }  // namespace relgeo::test

@@ -103,8 +103,10 @@ sanitized_suites=(
 
 run_sanitized_tests() {
   local dir=$build-asan
+  # -O1 and line tables only (-g1): the sanitizers' usual setting, and half the
+  # compile time of -O2 -g on the Boolean suites (130 -> 67 s for one TU).
   configure "$dir" -DRELGEO_SANITIZE=ON -DRELGEO_BUILD_BENCHMARKS=OFF -DRELGEO_BUILD_TOOLS=OFF \
-    -DCMAKE_BUILD_TYPE=RelWithDebInfo
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
   local available targets=()
   available=$(cmake --build "$dir" --target help)
   for t in "${sanitized_suites[@]}"; do
@@ -137,7 +139,9 @@ fuzz_limits=(-timeout=30 -rss_limit_mb=2048 -malloc_limit_mb=1024)
 
 build_fuzzers() {
   command -v clang++ >/dev/null || { log "error: clang++ not found (package clang)"; exit 2; }
+  # Line tables only (as OSS-Fuzz builds): stack traces keep file and line.
   configure "$fuzz_build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
     -DRELGEO_BUILD_FUZZERS=ON -DRELGEO_BUILD_TESTS=OFF -DRELGEO_BUILD_BENCHMARKS=OFF -DRELGEO_BUILD_TOOLS=OFF
   cmake --build "$fuzz_build" -j "$jobs" --target relgeo_fuzzers
 }

@@ -16,7 +16,6 @@
 // minimum of each figure over the repetitions and the layer's time over the
 // plain Boolean's (the bar: at most 1.0 at level 2).
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -24,6 +23,7 @@
 #include "common/command_line.h"
 #include "relgeo/boolean.h"
 #include "relgeo/boolean/subdivision_boolean.h"
+#include "relgeo/core/internal/stopwatch.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/mesh/shapes.h"
 #include "relgeo/subdivision/loop_subdivision.h"
@@ -59,10 +59,6 @@ struct Figures {
 };
 std::map<unsigned, Figures> figures;
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 void subdivision_boolean_run(benchmark::State& state, unsigned level) {
   const auto& [a, b] = control_meshes();
   relgeo::Subdivision_boolean_options options;
@@ -71,9 +67,9 @@ void subdivision_boolean_run(benchmark::State& state, unsigned level) {
   options.validate = false;
   Figures& f = figures[level];
   for (auto _ : state) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const relgeo::internal::Stopwatch t0;
     const auto r = relgeo::subdivision_boolean(a, b, kOp, level, Kernel{}, options);
-    const double t = seconds_since(t0);
+    const double t = t0.elapsed();
     f.total = std::min(f.total, t);
     f.limit_meshes = std::min(f.limit_meshes, r.time.limit_meshes);
     f.boolean = std::min(f.boolean, r.time.boolean);
@@ -93,9 +89,9 @@ void plain_boolean_run(benchmark::State& state, unsigned level) {
   Figures& f = figures[level];
   f.limit_faces = a.faces.size();
   for (auto _ : state) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const relgeo::internal::Stopwatch t0;
     const auto r = relgeo::boolean(a, b, kOp, Kernel{}, relgeo::Boolean_options{});
-    const double t = seconds_since(t0);
+    const double t = t0.elapsed();
     f.plain_boolean = std::min(f.plain_boolean, t);
     f.plain_faces = r.mesh.faces.size();
     f.ok = f.ok && r.ok();

@@ -30,10 +30,8 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -46,6 +44,8 @@
 #include "relgeo/boolean/internal/point_table.h"
 #include "relgeo/core/certified_sort.h"
 #include "relgeo/core/fp_environment.h"
+#include "relgeo/core/internal/stopwatch.h"
+#include "relgeo/core/internal/union_find.h"
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
@@ -108,15 +108,6 @@ class Boolean_engine {
   }
 
  private:
-  struct Stopwatch {
-    std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
-    double lap() {
-      const auto now = std::chrono::steady_clock::now();
-      const double s = std::chrono::duration<double>(now - t).count();
-      t = now;
-      return s;
-    }
-  };
   Result& finish_failed(Result& r, Stopwatch& clock, double Boolean_timing::*phase) {
     r.status = Result::Status::failed;
     r.time.*phase = clock.lap();
@@ -164,19 +155,11 @@ class Boolean_engine {
   void number_points() {
     offset_[0] = 0;
     offset_[1] = static_cast<Index>(mesh_[0]->vertices.size());
-    parent_.resize(points_.size());
-    std::iota(parent_.begin(), parent_.end(), Index{0});
+    equal_points_ = Union_find<Index>(points_.size());
   }
-  Index find(Index x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void unite(Index x, Index y) {
-    x = find(x), y = find(y);
-    if (x == y) return;
-    if (y < x) std::swap(x, y);  // the smaller index (an input vertex first) represents
-    parent_[y] = x;
-  }
+  // Equal points are one set; the smaller index (an input vertex first) represents it.
+  Index find(Index x) { return equal_points_.find(x); }
+  void unite(Index x, Index y) { equal_points_.unite(x, y); }
 
   // ---- 3. narrow phase ---------------------------------------------------------
 
@@ -258,7 +241,7 @@ class Boolean_engine {
     }
     if (id == invalid_index) {
       id = points_.add(p);
-      parent_.push_back(id);
+      equal_points_.add();
     }
     located_.push_back({id, {fa, fb}, {where[0], where[1]}});
     return id;
@@ -710,7 +693,7 @@ class Boolean_engine {
   Boolean_options options_;
   std::array<Index, 2> offset_{};
   Point_table<K> points_;
-  std::vector<Index> parent_;
+  Union_find<Index> equal_points_;
   std::vector<Located_point> located_;
   std::unordered_map<Cell_pair, Index, Cell_pair_hash> point_of_cells_;
   std::vector<Segment> segments_;

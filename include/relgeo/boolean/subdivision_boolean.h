@@ -38,7 +38,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -48,6 +47,7 @@
 #include "relgeo/boolean/internal/control_mapping.h"
 #include "relgeo/boolean/internal/crease_fitting.h"
 #include "relgeo/boolean/mesh_boolean.h"
+#include "relgeo/core/internal/stopwatch.h"
 #include "relgeo/boolean/subdivision_boolean_types.h"
 #include "relgeo/boolean/subdivision_validation.h"
 #include "relgeo/core/fp_environment.h"
@@ -112,12 +112,6 @@ inline Operand_at_level operand_at_level(const Triangle_mesh<Point_3<double>>& m
   return o;
 }
 
-inline double seconds_since(std::chrono::steady_clock::time_point& t) {
-  const auto now = std::chrono::steady_clock::now();
-  const double s = std::chrono::duration<double>(now - t).count();
-  t = now;
-  return s;
-}
 
 }  // namespace internal
 
@@ -151,20 +145,20 @@ Subdivision_boolean_result<K> subdivision_boolean(const Triangle_mesh<Point_3<do
   const Default_fp_environment_if<K::is_certified> environment;
   Subdivision_boolean_result<K> r;
   r.level = levels;
-  auto clock = std::chrono::steady_clock::now();
+  internal::Stopwatch clock;
   if (options.mesh.check_operands) {
     internal::check_control_operand(s, "A");
     internal::check_control_operand(s2, "B");
   }
   const std::array<internal::Operand_at_level, 2> at{internal::operand_at_level(s, levels, options.loop),
                                                      internal::operand_at_level(s2, levels, options.loop)};
-  r.time.limit_meshes = internal::seconds_since(clock);
+  r.time.limit_meshes = clock.lap();
   try {
     r.polyhedral = boolean(at[0].limit, at[1].limit, op, k, options.mesh);
   } catch (const Invalid_operand& e) {
     throw Invalid_operand(e.operand() + " (limit mesh at level " + std::to_string(levels) + ")", e.issues());
   }
-  r.time.boolean = internal::seconds_since(clock);
+  r.time.boolean = clock.lap();
   if (!r.polyhedral.ok()) {
     r.status = Subdivision_boolean_result<K>::Status::failed;
     r.failure = "polyhedral Boolean: " + r.polyhedral.failure;
@@ -177,16 +171,16 @@ Subdivision_boolean_result<K> subdivision_boolean(const Triangle_mesh<Point_3<do
   r.counts.curve_edges = r.polyhedral.mesh.tags.creases().size();
   for (int m = 0; m < 2; ++m) r.counts.bad_faces[m] = internal::count_bad_faces(at[m], m, r.curve_vertices, where);
   r.control = r.unfitted;
-  r.time.mapping = internal::seconds_since(clock);
+  r.time.mapping = clock.lap();
   try {
     r.distance_to_polyhedral =
         limit_surface_distance(r.unfitted, r.polyhedral.mesh, options.distance_samples, options.loop);
-    r.time.distance = internal::seconds_since(clock);
+    r.time.distance = clock.lap();
     if (options.fit && !r.curve_vertices.empty()) {
       const auto fitted = internal::fit_control_points(r.unfitted, r.polyhedral.mesh.vertices, r.curve_vertices,
                                                        options.fit_rings, options.fit_regularisation, options.loop,
                                                        r.counts.fitted_vertices);
-      r.time.fitting = internal::seconds_since(clock);
+      r.time.fitting = clock.lap();
       if (fitted) {
         r.distance_to_polyhedral_fitted =
             limit_surface_distance(*fitted, r.polyhedral.mesh, options.distance_samples, options.loop);
@@ -195,14 +189,14 @@ Subdivision_boolean_result<K> subdivision_boolean(const Triangle_mesh<Point_3<do
                             r.distance_to_polyhedral_fitted.hausdorff() < r.distance_to_polyhedral.hausdorff();
         if (better) r.control = *fitted, r.fitted = true;
       }
-      r.time.distance += internal::seconds_since(clock);
+      r.time.distance += clock.lap();
     }
   } catch (const Invalid_input& e) {  // Loop's rules refuse the merged mesh (two faces sharing two edges)
     r.status = Subdivision_boolean_result<K>::Status::failed;
     r.failure = std::string("subdivision result: ") + e.what();
   }
   if (options.validate) r.validation = validate_subdivision_solid(r.control, options.loop, options.validation);
-  r.time.validation = internal::seconds_since(clock);
+  r.time.validation = clock.lap();
   return r;
 }
 

@@ -21,11 +21,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <numeric>
 #include <queue>
 #include <span>
 #include <vector>
 
+#include "relgeo/core/internal/union_find.h"
 #include "relgeo/joining/boundary_chains.h"
 #include "relgeo/joining/error_measures.h"
 #include "relgeo/kernel/point.h"
@@ -170,16 +170,12 @@ Central_mesh central_mesh(std::span<const Triangle> faces, std::span<const Point
       if (!hit || *hit) crossing[e] = 1;
     });
   }
-  std::vector<Index> parent(nv);
-  std::iota(parent.begin(), parent.end(), Index{0});
-  const auto find = [&](Index v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  internal::Union_find<Index> sides(nv);  // vertices joined by edges that cross no boundary
+  const auto find = [&](Index v) { return sides.find(v); };
   for (Index e = 0; e < topology.number_of_edges(); ++e)
     if (!crossing[e]) {
       const Edge ab = topology.edge_vertices(e);
-      parent[find(ab.a)] = find(ab.b);
+      sides.unite(ab.a, ab.b);
     }
   std::vector<signed char> inside(nv, -1);  // per component root: 1 inside, 0 not (or undecided)
   for (Index v = 0; v < nv; ++v) {

@@ -32,7 +32,6 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -349,7 +348,7 @@ template <class K = Filtered_exact_kernel>
 Join_result join_meshes(const Surface_model& model, const std::vector<Triangle_mesh<Point_3<double>>>& meshes,
                         const Join_options& options = {}, const K& k = K{}) {
   using namespace internal::join;
-  const auto start = Clock::now();
+  const internal::Stopwatch start;
   Join_result result;
   Join_report& report = result.report;
   report.method = "whitney", report.kernel = K::name();
@@ -358,9 +357,9 @@ Join_result join_meshes(const Surface_model& model, const std::vector<Triangle_m
     throw Joining_input_error("join_meshes: " + std::to_string(meshes.size()) + " meshes for " +
                               std::to_string(model.faces.size()) + " faces");
   const auto step = [&](const char* name, auto&& f) {
-    const auto t = Clock::now();
+    const internal::Stopwatch t;
     f();
-    report.seconds.push_back({name, seconds_since(t)});
+    report.seconds.push_back({name, t.elapsed()});
   };
 
   std::vector<Face_state> faces(model.faces.size());
@@ -427,7 +426,7 @@ Join_result join_meshes(const Surface_model& model, const std::vector<Triangle_m
     report.guarantees_hold = std::all_of(report.faces.begin(), report.faces.end(),
                                          [](const Join_face_report& r) { return r.guarantees_hold; });
   });
-  report.total_seconds = seconds_since(start);
+  report.total_seconds = start.elapsed();
   return result;
 }
 

@@ -223,7 +223,7 @@ template <class K = Filtered_exact_kernel>
 Join_result naive_sewing(const Surface_model& model, const std::vector<Triangle_mesh<Point_3<double>>>& meshes,
                          const Join_options& options = {}, const K& k = K{}) {
   using namespace internal::join;
-  const auto start = Clock::now();
+  const internal::Stopwatch start;
   Join_result result;
   Join_report& report = result.report;
   report.method = "naive-midpoint", report.kernel = K::name();
@@ -231,9 +231,9 @@ Join_result naive_sewing(const Surface_model& model, const std::vector<Triangle_
     throw Joining_input_error("naive_sewing: " + std::to_string(meshes.size()) + " meshes for " +
                               std::to_string(model.faces.size()) + " faces");
   const auto step = [&](const char* name, auto&& f) {
-    const auto t = Clock::now();
+    const internal::Stopwatch t;
     f();
-    report.seconds.push_back({name, seconds_since(t)});
+    report.seconds.push_back({name, t.elapsed()});
   };
   std::vector<Face_state> faces(model.faces.size());
   step("projection", [&] {
@@ -252,7 +252,7 @@ Join_result naive_sewing(const Surface_model& model, const std::vector<Triangle_
   std::set<Index> seam_vertices;
   step("merge", [&] { face_triangles = merge_sewn_faces(faces, edits, model, result, seam_vertices); });
   step("measures", [&] { measure_sewn(faces, edits, face_triangles, seam_vertices, result, k); });
-  report.total_seconds = seconds_since(start);
+  report.total_seconds = start.elapsed();
   return result;
 }
 

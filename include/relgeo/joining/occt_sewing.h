@@ -43,7 +43,7 @@ template <class K = Filtered_exact_kernel>
 Join_result occt_sewing(const Surface_model& model, const std::vector<Triangle_mesh<Point_3<double>>>& meshes,
                         const Occt_sewing_options& options = {}, const K& k = K{}) {
   using namespace internal::join;
-  const auto start = Clock::now();
+  const internal::Stopwatch start;
   Join_result result;
   Join_report& report = result.report;
   report.method = "occt-sewing", report.kernel = K::name();
@@ -63,24 +63,23 @@ Join_result occt_sewing(const Surface_model& model, const std::vector<Triangle_m
   const double scale = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
   std::vector<Handle(Geom_Surface)> surfaces;
   TopoDS_Shape sewn;
-  auto t = Clock::now();
+  internal::Stopwatch t;
   try {
     const TopoDS_Compound compound = shape_from_surface_model(model, &surfaces);
     BRepBuilderAPI_Sewing sewing(options.sewing_tolerance * scale);
     for (TopExp_Explorer x(compound, TopAbs_FACE); x.More(); x.Next()) sewing.Add(x.Current());
     sewing.Perform();
     sewn = sewing.SewedShape();
-    report.seconds.push_back({"sewing", seconds_since(t)});
-    t = Clock::now();
+    report.seconds.push_back({"sewing", t.lap()});
     BRepMesh_IncrementalMesh mesher(sewn, options.linear_deflection * scale, Standard_False, options.angular_deflection,
                                     Standard_True);
-    report.seconds.push_back({"meshing", seconds_since(t)});
+    report.seconds.push_back({"meshing", t.lap()});
   } catch (const Standard_Failure& e) {
     throw Joining_failure(std::string("OpenCASCADE: ") + e.GetMessageString());
   }
   // Triangulations per face, merged by identical node coordinates (BRepMesh
   // discretises a shared edge once for both faces).
-  t = Clock::now();
+  t.restart();
   Triangle_mesh<Point_3<double>>& m = result.mesh;
   std::map<std::tuple<double, double, double>, Index> node_index;
   std::vector<Height_field> fields(faces.size());
@@ -120,8 +119,7 @@ Join_result occt_sewing(const Surface_model& model, const std::vector<Triangle_m
       result.face_of_triangle.push_back(static_cast<Index>(f));
     }
   }
-  report.seconds.push_back({"merge", seconds_since(t)});
-  t = Clock::now();
+  report.seconds.push_back({"merge", t.lap()});
   for (std::size_t f = 0; f < faces.size(); ++f) {
     Join_face_report& r = faces[f].report;
     const Patch_errors after = patch_errors(tris[f], fields[f]);
@@ -157,8 +155,8 @@ Join_result occt_sewing(const Surface_model& model, const std::vector<Triangle_m
   report.conforming = report.non_manifold_edges == 0 && report.inconsistent_orientations == 0;
   report.watertight_seams = report.seam_boundary_edges == 0;
   report.guarantees_hold = std::all_of(report.faces.begin(), report.faces.end(), [](const auto& r) { return r.guarantees_hold; });
-  report.seconds.push_back({"measures", seconds_since(t)});
-  report.total_seconds = seconds_since(start);
+  report.seconds.push_back({"measures", t.elapsed()});
+  report.total_seconds = start.elapsed();
   return result;
 }
 

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +22,8 @@
 
 #include "relgeo/core/errors.h"
 #include "relgeo/core/floating_point.h"
+#include "relgeo/core/internal/stopwatch.h"
+#include "relgeo/core/internal/union_find.h"
 #include "relgeo/joining/boundary_chains.h"
 #include "relgeo/joining/central_mesh.h"
 #include "relgeo/joining/domain_mesh.h"
@@ -65,8 +66,6 @@ struct Join_result {
 
 namespace internal::join {
 
-using Clock = std::chrono::steady_clock;
-inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 /// Identity of a point on the joints: a model vertex, or position `segment`
 /// + t along an edge's joint polyline.
@@ -206,12 +205,8 @@ inline std::vector<Point_3<double>> chain_points(const Face_state& s, const Edge
 /// start of the next one in a loop are one vertex, an end of their edges
 /// (union-find over the joints' ends). Names every joint's start and end.
 inline void assign_vertices(const std::vector<Face_state>& faces, std::vector<Joint>& joints) {
-  std::vector<std::size_t> parent(2 * joints.size());  // 2j: start of joint j, 2j+1: its end
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
-  const auto find = [&](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  Union_find<std::size_t> ends(2 * joints.size());  // 2j: start of joint j, 2j+1: its end
+  const auto find = [&](std::size_t x) { return ends.find(x); };
   for (const Face_state& s : faces)
     for (std::size_t l = 0; l < s.curve_edge.size(); ++l) {
       const Trim_loop& loop = Surface_model::loop(*s.face, l);
@@ -221,7 +216,7 @@ inline void assign_vertices(const std::vector<Face_state>& faces, std::vector<Jo
         // Loop end of curve c: its natural end unless reversed; loop start of d likewise.
         const std::size_t end_c = 2 * static_cast<std::size_t>(s.curve_edge[l][c]) + (loop.curves[c].reversed ? 0 : 1);
         const std::size_t start_d = 2 * static_cast<std::size_t>(s.curve_edge[l][d]) + (loop.curves[d].reversed ? 1 : 0);
-        parent[find(end_c)] = find(start_d);
+        ends.unite(end_c, start_d);
       }
     }
   std::map<std::size_t, int> id;

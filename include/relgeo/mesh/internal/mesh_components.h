@@ -5,9 +5,9 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <numeric>
 #include <vector>
 
+#include "relgeo/core/internal/union_find.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::internal {
@@ -20,17 +20,10 @@ struct Face_components {
 
 /// Components by union-find over the vertices. \pre indices < nv.
 inline Face_components face_components(const std::vector<Triangle>& faces, std::size_t nv) {
-  std::vector<Index> parent(nv);
-  std::iota(parent.begin(), parent.end(), Index{0});
-  const auto find = [&](Index v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];  // path halving
-    return v;
-  };
+  Union_find<Index> sets(nv);
+  const auto find = [&](Index v) { return sets.find(v); };
   for (const Triangle& t : faces)
-    for (int i = 1; i < 3; ++i) {
-      const Index a = find(t[0]), b = find(t[i]);
-      if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
+    for (int i = 1; i < 3; ++i) sets.unite(t[0], t[i]);
   Face_components c;
   c.component.resize(faces.size());
   std::vector<Index> id(nv, invalid_index);

@@ -4,12 +4,12 @@
 #include "commands/experiment/command.h"
 
 #include <algorithm>
-#include <chrono>
 #include <ostream>
 #include <system_error>
 
 #include "commands/experiment/html_report.h"
 #include "experiment/section.h"
+#include "relgeo/core/internal/stopwatch.h"
 #include "relgeo/io/text_file.h"
 
 namespace relgeo::tool {
@@ -68,11 +68,7 @@ int run_experiment(const Experiment_options& o, Streams io) {
       throw Usage_error("--output: cannot create folder '" + o.output + "'" +
                         (ec ? ": " + ec.message() : std::string()));
   }
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  auto seconds_since = [](Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
-  };
+  const internal::Stopwatch start;
 
   Experiment_context ctx;
   ctx.output_dir = dir;
@@ -95,15 +91,15 @@ int run_experiment(const Experiment_options& o, Streams io) {
         std::find(o.sections.begin(), o.sections.end(), std::string(sec.name)) == o.sections.end())
       continue;
     ctx.section = std::string(sec.name);
-    const auto section_start = Clock::now();
+    const internal::Stopwatch section_start;
     ctx.progress = [&, name = ctx.section](const std::string& line) {
       if (!o.quiet)
-        err << "[" << name << " " << format_fixed(seconds_since(start), 1) << "s] " << line
+        err << "[" << name << " " << format_fixed(start.elapsed(), 1) << "s] " << line
             << std::endl;
     };
     ctx.progress("start");
     Section_report rep = sec.run(ctx);
-    const double t = seconds_since(section_start);
+    const double t = section_start.elapsed();
     Json j;
     j["section"] = ctx.section;
     j["quick"] = o.quick;
@@ -124,7 +120,7 @@ int run_experiment(const Experiment_options& o, Streams io) {
     sections[ctx.section] = std::move(j);
     html.push_back({ctx.section, std::string(sec.summary), t, std::move(rep)});
   }
-  const double total = seconds_since(start);
+  const double total = start.elapsed();
   all["time_s"] = total;
   all["failures"] = failures;
   Json index = all;

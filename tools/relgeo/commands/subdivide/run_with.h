@@ -6,13 +6,13 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "commands/subdivide/facade.h"
 #include "kernels/dispatch.h"
+#include "relgeo/core/internal/stopwatch.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/subdivision.h"
 
@@ -47,9 +47,6 @@ bool run_subdivision_exact_kernels(const Mesh_double& input, const Subdivision_r
                                    Subdivision_result& result);
 
 namespace subdivision_detail {
-
-using Clock = std::chrono::steady_clock;
-inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 template <class P>
 Point_3<double> to_double(const P& p) {
@@ -100,11 +97,11 @@ Subdivision_result run_subdivision_with(const Mesh_double& input, const Subdivis
   m.faces = input.faces;
   m.tags = input.tags;
 
-  auto t0 = Clock::now();
+  internal::Stopwatch clock;
   Loop_subdivider<K> subdivider(rq.options, kernel);
   const Triangle_mesh<P> R = subdivider.refine(m, rq.levels);
   const Triangle_mesh<P> L = subdivider.limit_mesh(m, rq.levels);
-  res.time_subdivision = seconds_since(t0);
+  res.time_subdivision = clock.elapsed();
   res.refined = to_double_mesh(R);
   res.limit = to_double_mesh(L);
 
@@ -127,7 +124,7 @@ Subdivision_result run_subdivision_with(const Mesh_double& input, const Subdivis
   }
 
   // Sampling: distances of the refined and the limit mesh to the limit surface.
-  t0 = Clock::now();
+  clock.restart();
   const Loop_limit_surface<K> surface(R, rq.options, kernel);
   const std::size_t nf = R.faces.size();
   for (Index f = 0; f < nf; ++f) ++res.patch_kinds[int(surface.patch_kind(f))];
@@ -151,14 +148,14 @@ Subdivision_result run_subdivision_with(const Mesh_double& input, const Subdivis
       res.limit_normal_offset = std::max(res.limit_normal_offset, std::abs(h));
     }
   }
-  res.time_sampling = seconds_since(t0);
+  res.time_sampling = clock.elapsed();
 
   if (!rq.bounds) return res;
-  t0 = Clock::now();
+  clock.restart();
   Loop_bound_options bo;
   if (rq.small_bounds) bo = Loop_bound_options{.irregular_depth = 2, .regular_depth = 1, .universal_depth = 3};
   const Loop_limit_mesh_bounds<K> b = Loop_error_bounds<K>(rq.options, bo, kernel).compute(m, rq.levels);
-  res.time_bounds = seconds_since(t0);
+  res.time_bounds = clock.elapsed();
   const double tol = 1e-13 * (1 + res.mesh_size);  // rounding of the double sample heights
   const auto summarise = [&](const std::string& name, auto&& bound_of, bool is_bound) {
     Bound_summary s;

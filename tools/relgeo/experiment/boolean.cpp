@@ -6,10 +6,13 @@
 // test on its doubles) and its volume compared with CGAL's corefinement on
 // Epeck (the oracle, once per case). A certified kernel must give a valid
 // result with the oracle's volume (relative 1e-12) or fail honestly: a
-// certified result that is invalid or off is a failure of the section.
-// Rounding the exact vertices to doubles can make a valid result cross
-// itself (CGAL issue 9154): the table counts those crossings, and the exact
-// kernel's row says whether its result crossed itself before rounding.
+// certified result that is invalid before rounding or off is a failure of
+// the section. Rounding the exact vertices to doubles can make a valid result
+// cross itself (CGAL issue 9154): the table counts those crossings, the exact
+// kernel's row says whether its result crossed itself before rounding, and
+// the headline counts a result valid only when the mesh the user receives
+// (doubles) is. A rounded crossing is listed, not a failure of the run: the
+// engine does not snap-round yet (issue 28).
 // Pictures (PNG) in DIR/boolean/: the union of two spheres and of the torus
 // with a sphere, faces coloured by operand, intersection curves in red.
 #include <algorithm>
@@ -75,7 +78,8 @@ Section_report boolean_section(const Experiment_context& ctx) {
   t.set_left_columns(4);
   Json rows = Json::array();
   std::vector<Picture> pictures;
-  std::size_t certified_runs = 0, certified_exact = 0;
+  std::size_t certified_runs = 0, certified_exact = 0, certified_delivered = 0;
+  std::vector<std::string> rounded_crossings;
   for (const Boolean_case& c : boolean_cases(ctx.quick)) {
     ctx.progress(c.name + ": CGAL's corefinement (Epeck)");
     // The oracle's volume does not depend on the result passed: give it none.
@@ -99,7 +103,9 @@ Section_report boolean_section(const Experiment_context& ctx) {
       // the exact kernel (the filtered kernel's result has the same faces: the
       // exact kernel runs on it through its Double_point_kernel).
       const bool crossing_free = !run.exact_self_intersecting_pairs || *run.exact_self_intersecting_pairs == 0;
-      const bool valid = solid && crossing_free;
+      const bool valid_exact = solid && crossing_free;
+      // What the user receives: the doubles, crossings of the rounded mesh included.
+      const bool valid = valid_exact && crossings == 0;
       // No oracle when CGAL's corefinement refuses (it cannot output a
       // non-manifold edge): NaN, shown as "no oracle".
       const double rel = !oracle.cgal_ok         ? std::nan("")
@@ -107,10 +113,16 @@ Section_report boolean_section(const Experiment_context& ctx) {
                                                    : std::abs(volume);
       if (run.certified && run.ok) {
         ++certified_runs;
-        if (valid && (std::isnan(rel) || rel <= 1e-12)) ++certified_exact;
-        else
+        const bool on_volume = std::isnan(rel) || rel <= 1e-12;
+        if (valid_exact && on_volume) {
+          ++certified_exact;
+          if (valid) ++certified_delivered;
+          else rounded_crossings.push_back(c.name + " under " + kernel + ": " + std::to_string(crossings) +
+                                           " crossing face pairs after rounding");
+        } else {
           rep.failures.push_back(c.name + " under " + kernel + ": certified result " +
-                                 (valid ? "off the oracle's volume by " + g3(rel) : std::string("not valid")));
+                                 (valid_exact ? "off the oracle's volume by " + g3(rel) : std::string("not valid")));
+        }
       }
       const auto yes_no = [&](bool x) { return run.ok ? std::string(x ? "yes" : "NO") : std::string("-"); };
       t.add_row({c.name, std::string(to_string(c.op)), kernel, status.substr(0, 40),
@@ -129,6 +141,7 @@ Section_report boolean_section(const Experiment_context& ctx) {
       j["certified"] = run.certified;
       j["faces"] = run.output.faces.size();
       j["valid"] = valid;
+      j["valid_before_rounding"] = valid_exact;
       j["validation"] = run.ok ? Json(run.validation.summary()) : Json(nullptr);
       j["rounded_self_intersecting_pairs"] = crossings;
       j["exact_self_intersecting_pairs"] =
@@ -158,8 +171,9 @@ Section_report boolean_section(const Experiment_context& ctx) {
   rep.json["notes"] =
       "solid = closed, consistently oriented, no degenerate face, positive volume, outward orientation not failed "
       "(validate_solid, exact tests on the output's doubles); manifold = edge- and vertex-manifold; crossings = self-intersecting face pairs of the "
-      "rounded output; exact cr. = the same before rounding (exact kernel); valid = solid and no crossing before "
-      "rounding where known (exact kernel); rel. error = |volume - CGAL Epeck corefinement volume| / |CGAL volume|; curves = crease edges";
+      "rounded output; exact cr. = the same before rounding (exact kernel); valid = solid and no crossing, in "
+      "the rounded output and before rounding where known (exact kernel); valid_before_rounding = the same without "
+      "the rounded output's crossings; rel. error = |volume - CGAL Epeck corefinement volume| / |CGAL volume|; curves = crease edges";
   rep.add_note(
       "Mesh Booleans (thesis Ch. 5) under every kernel, against CGAL's corefinement on Epeck (the oracle).\n"
       "solid = closed, consistently oriented, no degenerate face, positive volume (exact tests on the output's doubles);\n"
@@ -173,7 +187,15 @@ Section_report boolean_section(const Experiment_context& ctx) {
   rep.add_table(t);
   rep.add_gallery("Unions: faces coloured by operand, intersection curves in red (kernel filtered)",
                   std::move(pictures));
-  rep.add_headline("Certified Boolean results valid and on the oracle's volume",
+  rep.json["rounded_crossings"] = rounded_crossings;
+  if (!rounded_crossings.empty()) {
+    std::string listed = "Certified results valid before rounding that cross themselves in doubles:\n";
+    for (const std::string& r : rounded_crossings) listed += "  " + r + "\n";
+    rep.add_note(listed + "\n");
+  }
+  rep.add_headline("Certified Boolean results valid as delivered (in doubles) and on the oracle's volume",
+                   std::to_string(certified_delivered) + " of " + std::to_string(certified_runs));
+  rep.add_headline("Certified Boolean results valid before rounding and on the oracle's volume",
                    std::to_string(certified_exact) + " of " + std::to_string(certified_runs));
   return rep;
 }

@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "relgeo/boolean/boolean_types.h"
+#include "relgeo/boolean/compiled.h"
 #include "relgeo/boolean/internal/face_triangulation.h"
 #include "relgeo/boolean/internal/labelling.h"
 #include "relgeo/boolean/internal/point_table.h"
@@ -738,23 +739,11 @@ Boolean_result<K> with_exact_points(Boolean_result<Filtered_exact_kernel>&& r) {
 
 }  // namespace internal
 
-/// \brief The regularised Boolean `op` of the solids bounded by closed
-/// triangle meshes `a` and `b` (double coordinates), under kernel K.
-///
-/// Requires an IntersectionKernel_3. Exact under kernels with exact
-/// predicates (Filtered_exact_kernel, the default, and Exact_kernel): the
-/// result's exact_vertex(i) are the exact points, its mesh their nearest
-/// doubles (rounding_error says how far; rounding can in rare cases make the
-/// rounded mesh self-intersect: validate it). Fail-safe and interval kernels
-/// give the same result or a failure naming the face pairs they cannot
-/// decide (no vertex is moved: doc/boolean.md, "The kernels"); naive
-/// kernels give what their arithmetic gives, never a crash.
-/// \throws Invalid_operand when an operand is open, non-manifold,
-/// inconsistently oriented, degenerate, non-finite or self-intersecting
-/// (options.check_operands), before any other work.
-template <class K = Filtered_exact_kernel>
+// relgeo::boolean (declared with its documentation and defaults in
+// boolean/compiled.h).
+template <class K>
 Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b,
-                          Boolean_operation op, const K& k = K{}, const Boolean_options& options = {}) {
+                          Boolean_operation op, const K& k, const Boolean_options& options) {
   if constexpr (internal::Runs_on_filtered_exact_kernel<K>) {
     if (options.use_double_point_kernel) {
       // The engine is gone (its memory freed) before the points are converted.

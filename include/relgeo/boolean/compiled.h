@@ -1,0 +1,51 @@
+// relgeo/boolean/compiled.h — relgeo::boolean declared, without its engine.
+// A client that links relgeo::compiled includes this header instead of
+// relgeo/boolean.h and calls the Boolean under the kernels compiled there
+// (Filtered_exact_kernel, the default; Exact_kernel; Naive_kernel<double>):
+// it parses the result types only (about 2.5 s instead of 15 s for a
+// translation unit with one call, doc/boolean.md "Compile time"). Another
+// kernel needs the definition: include relgeo/boolean.h (header-only).
+#pragma once
+
+#include "relgeo/boolean/boolean_types.h"
+#include "relgeo/kernel/exact_kernel.h"
+#include "relgeo/kernel/filtered_exact_kernel.h"
+#include "relgeo/kernel/naive_kernel.h"
+#include "relgeo/mesh/triangle_mesh.h"
+
+namespace relgeo {
+
+/// \brief The regularised Boolean `op` of the solids bounded by closed
+/// triangle meshes `a` and `b` (double coordinates), under kernel K.
+///
+/// Requires an IntersectionKernel_3. Exact under kernels with exact
+/// predicates (Filtered_exact_kernel, the default, and Exact_kernel): the
+/// result's exact_vertex(i) are the exact points, its mesh their nearest
+/// doubles (rounding_error says how far; rounding can make the rounded mesh
+/// cross itself where the operands cross at a small angle: the output's
+/// validation, Boolean_result::validation, says so and where). Fail-safe and interval kernels
+/// give the same result or a failure naming the face pairs they cannot
+/// decide (no vertex is moved: doc/boolean.md, "The kernels"); naive
+/// kernels give what their arithmetic gives, never a crash.
+/// \throws Invalid_operand when an operand is open, non-manifold,
+/// inconsistently oriented, degenerate, non-finite or self-intersecting
+/// (options.check_operands), before any other work.
+template <class K = Filtered_exact_kernel>
+Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b,
+                          Boolean_operation op, const K& k = K{}, const Boolean_options& options = {});
+
+#if defined(RELGEO_COMPILED) && RELGEO_COMPILED
+// Instantiated once in relgeo::compiled (src/compiled/boolean.cpp), which
+// defines RELGEO_COMPILED for the targets that link it.
+extern template Boolean_result<Filtered_exact_kernel> boolean(const Triangle_mesh<Point_3<double>>&,
+                                                              const Triangle_mesh<Point_3<double>>&, Boolean_operation,
+                                                              const Filtered_exact_kernel&, const Boolean_options&);
+extern template Boolean_result<Exact_kernel> boolean(const Triangle_mesh<Point_3<double>>&,
+                                                     const Triangle_mesh<Point_3<double>>&, Boolean_operation,
+                                                     const Exact_kernel&, const Boolean_options&);
+extern template Boolean_result<Naive_kernel<double>> boolean(const Triangle_mesh<Point_3<double>>&,
+                                                             const Triangle_mesh<Point_3<double>>&, Boolean_operation,
+                                                             const Naive_kernel<double>&, const Boolean_options&);
+#endif
+
+}  // namespace relgeo

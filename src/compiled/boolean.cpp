@@ -1,7 +1,7 @@
 // src/compiled/boolean.cpp — relgeo::compiled: relgeo::boolean instantiated
 // once for the kernels people use (the filtered exact default, the exact
 // rationals, the naive double baseline). The matching `extern template`
-// declarations are in relgeo/boolean/mesh_boolean.h: a translation unit that
+// declarations are in relgeo/boolean/compiled.h: a translation unit that
 // links relgeo::compiled (which defines RELGEO_COMPILED) compiles no Boolean
 // engine for these kernels; every other kernel is instantiated in place, as
 // in the header-only use.

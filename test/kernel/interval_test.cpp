@@ -16,7 +16,6 @@ namespace {
 
 using test::encloses;
 
-
 double random_double(std::mt19937_64& g) {
   // Random sign, exponent in [-1074, 1000] and mantissa: covers subnormals.
   const int e = static_cast<int>(g() % 2075) - 1074;

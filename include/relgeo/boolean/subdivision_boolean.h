@@ -47,10 +47,10 @@
 #include "relgeo/boolean/internal/control_mapping.h"
 #include "relgeo/boolean/internal/crease_fitting.h"
 #include "relgeo/boolean/mesh_boolean.h"
-#include "relgeo/core/internal/stopwatch.h"
 #include "relgeo/boolean/subdivision_boolean_types.h"
 #include "relgeo/boolean/subdivision_validation.h"
 #include "relgeo/core/fp_environment.h"
+#include "relgeo/core/internal/stopwatch.h"
 #include "relgeo/mesh/point_mesh_distance.h"
 #include "relgeo/mesh/validity.h"
 #include "relgeo/subdivision/limit_evaluation.h"
@@ -111,7 +111,6 @@ inline Operand_at_level operand_at_level(const Triangle_mesh<Point_3<double>>& m
   o.limit.vertices = sub.limit_positions(o.control);
   return o;
 }
-
 
 }  // namespace internal
 

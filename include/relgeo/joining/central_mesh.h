@@ -171,7 +171,6 @@ Central_mesh central_mesh(std::span<const Triangle> faces, std::span<const Point
     });
   }
   internal::Union_find<Index> sides(nv);  // vertices joined by edges that cross no boundary
-  const auto find = [&](Index v) { return sides.find(v); };
   for (Index e = 0; e < topology.number_of_edges(); ++e)
     if (!crossing[e]) {
       const Edge ab = topology.edge_vertices(e);
@@ -179,7 +178,7 @@ Central_mesh central_mesh(std::span<const Triangle> faces, std::span<const Point
     }
   std::vector<signed char> inside(nv, -1);  // per component root: 1 inside, 0 not (or undecided)
   for (Index v = 0; v < nv; ++v) {
-    const Index r = find(v);
+    const Index r = sides.find(v);
     if (inside[r] >= 0) continue;
     int winding = 0;
     bool decided = true;
@@ -196,7 +195,7 @@ Central_mesh central_mesh(std::span<const Triangle> faces, std::span<const Point
   for (Index f = 0; f < nf; ++f) {
     bool out = false;
     for (int i = 0; i < 3; ++i) {
-      out = out || inside[find(faces[f][i])] != 1;
+      out = out || inside[sides.find(faces[f][i])] != 1;
       const Index he = 3 * f + static_cast<Index>(i);
       out = out || crossing[topology.edge(he)];
     }

@@ -17,25 +17,18 @@ class Union_find {
  public:
   explicit Union_find(std::size_t n = 0) : parent_(n) { std::iota(parent_.begin(), parent_.end(), I{0}); }
 
-  std::size_t size() const { return parent_.size(); }
-  /// A new singleton set; returns its index.
-  I add() {
-    const I x = static_cast<I>(parent_.size());
-    parent_.push_back(x);
-    return x;
-  }
+  /// A new singleton set (the next index).
+  void add() { parent_.push_back(static_cast<I>(parent_.size())); }
   /// The representative of x's set (the smallest index in it).
   I find(I x) {
     while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];  // path halving
     return x;
   }
-  /// Joins the sets of x and y; false when they were one already.
-  bool unite(I x, I y) {
+  /// Joins the sets of x and y.
+  void unite(I x, I y) {
     x = find(x), y = find(y);
-    if (x == y) return false;
     if (y < x) std::swap(x, y);
     parent_[y] = x;
-    return true;
   }
 
  private:

@@ -66,7 +66,6 @@ struct Join_result {
 
 namespace internal::join {
 
-
 /// Identity of a point on the joints: a model vertex, or position `segment`
 /// + t along an edge's joint polyline.
 struct Point_key {
@@ -206,7 +205,6 @@ inline std::vector<Point_3<double>> chain_points(const Face_state& s, const Edge
 /// (union-find over the joints' ends). Names every joint's start and end.
 inline void assign_vertices(const std::vector<Face_state>& faces, std::vector<Joint>& joints) {
   Union_find<std::size_t> ends(2 * joints.size());  // 2j: start of joint j, 2j+1: its end
-  const auto find = [&](std::size_t x) { return ends.find(x); };
   for (const Face_state& s : faces)
     for (std::size_t l = 0; l < s.curve_edge.size(); ++l) {
       const Trim_loop& loop = Surface_model::loop(*s.face, l);
@@ -221,8 +219,8 @@ inline void assign_vertices(const std::vector<Face_state>& faces, std::vector<Jo
     }
   std::map<std::size_t, int> id;
   for (std::size_t j = 0; j < joints.size(); ++j) {
-    joints[j].start_vertex = id.emplace(find(2 * j), static_cast<int>(id.size())).first->second;
-    joints[j].end_vertex = id.emplace(find(2 * j + 1), static_cast<int>(id.size())).first->second;
+    joints[j].start_vertex = id.emplace(ends.find(2 * j), static_cast<int>(id.size())).first->second;
+    joints[j].end_vertex = id.emplace(ends.find(2 * j + 1), static_cast<int>(id.size())).first->second;
   }
 }
 

@@ -21,14 +21,13 @@ struct Face_components {
 /// Components by union-find over the vertices. \pre indices < nv.
 inline Face_components face_components(const std::vector<Triangle>& faces, std::size_t nv) {
   Union_find<Index> sets(nv);
-  const auto find = [&](Index v) { return sets.find(v); };
   for (const Triangle& t : faces)
     for (int i = 1; i < 3; ++i) sets.unite(t[0], t[i]);
   Face_components c;
   c.component.resize(faces.size());
   std::vector<Index> id(nv, invalid_index);
   for (Index f = 0; f < faces.size(); ++f) {
-    Index& slot = id[find(faces[f][0])];
+    Index& slot = id[sets.find(faces[f][0])];
     if (slot == invalid_index) {
       slot = static_cast<Index>(c.first_face.size());
       c.first_face.push_back(f);

@@ -31,6 +31,7 @@
 #include <optional>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/mesh/internal/embedded_stars.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::internal {
@@ -115,6 +116,58 @@ Maybe triangles_meet(const K& k, const std::array<const typename K::Point_3*, 3>
 /// Whether faces f and g (vertex indices, points through `point`) meet
 /// other than in the vertices and edge they share (file comment).
 /// \pre neither face is degenerate.
+inline bool strictly_signed(Certified_sign s) { return s == Certified_sign::positive || s == Certified_sign::negative; }
+
+/// Faces (v, a1, a2) and (v, b1, b2) sharing only v certainly meet in v
+/// only when, in the first coordinate plane where both project with a
+/// definite orientation, a line through v and a corner strictly separates
+/// the other corners: a projection that keeps a face's orientation is one
+/// to one on it, so a point shared beyond v would project into both images
+/// beyond v's. Decides nearly coplanar neighbours (the pieces of one face
+/// of a Boolean's operand) from well-conditioned 2D signs, where the 3D
+/// orientations need exact arithmetic.
+template <class K>
+bool separated_around_vertex(const K& k, const typename K::Point_3& v, const typename K::Point_3& a1,
+                             const typename K::Point_3& a2, const typename K::Point_3& b1,
+                             const typename K::Point_3& b2) {
+  const auto orient = k.orientation_2_object();
+  for (int plane = 0; plane < 3; ++plane) {
+    const auto pv = project_to_plane<K>(v, plane), pa1 = project_to_plane<K>(a1, plane),
+               pa2 = project_to_plane<K>(a2, plane), pb1 = project_to_plane<K>(b1, plane),
+               pb2 = project_to_plane<K>(b2, plane);
+    if (!strictly_signed(orient(pv, pa1, pa2)) || !strictly_signed(orient(pv, pb1, pb2))) continue;
+    // The line through v and `on` separates `alone` from `other1` and `other2`.
+    const auto separates = [&](const auto& on, const auto& alone, const auto& other1, const auto& other2) {
+      const Certified_sign s = orient(pv, on, alone);
+      if (!strictly_signed(s)) return false;
+      const Certified_sign t1 = orient(pv, on, other1), t2 = orient(pv, on, other2);
+      return strictly_signed(t1) && t1 == t2 && t1 != s;
+    };
+    return separates(pa1, pa2, pb1, pb2) || separates(pa2, pa1, pb1, pb2) || separates(pb1, pb2, pa1, pa2) ||
+           separates(pb2, pb1, pa1, pa2);
+  }
+  return false;
+}
+
+/// Faces sharing the edge (u, w), with third corners a and b, are certainly
+/// not folded onto each other when some coordinate plane shows a and b
+/// strictly on opposite sides of the edge (folded faces lie in one plane on
+/// one side of it, and an axis projection keeps that, or flattens the
+/// plane to a line).
+template <class K>
+bool opposite_across_edge(const K& k, const typename K::Point_3& u, const typename K::Point_3& w,
+                          const typename K::Point_3& a, const typename K::Point_3& b) {
+  const auto orient = k.orientation_2_object();
+  for (int plane = 0; plane < 3; ++plane) {
+    const auto pu = project_to_plane<K>(u, plane), pw = project_to_plane<K>(w, plane);
+    const Certified_sign sa = orient(pu, pw, project_to_plane<K>(a, plane));
+    if (!strictly_signed(sa)) continue;
+    const Certified_sign sb = orient(pu, pw, project_to_plane<K>(b, plane));
+    if (strictly_signed(sb)) return sb != sa;
+  }
+  return false;
+}
+
 template <class K, class Points>
 Maybe faces_meet_beyond_shared(const K& k, const Points& point, const Triangle& f, const Triangle& g) {
   int shared = 0, fi[3], gi[3];
@@ -140,17 +193,18 @@ Maybe faces_meet_beyond_shared(const K& k, const Points& point, const Triangle& 
       const auto& a2 = point[f[(i + 2) % 3]];
       const auto& b1 = point[g[(j + 1) % 3]];
       const auto& b2 = point[g[(j + 2) % 3]];
-      const auto strict = [](Certified_sign s) { return s == Certified_sign::positive || s == Certified_sign::negative; };
+      if (separated_around_vertex(k, point[f[i]], a1, a2, b1, b2)) return false;
       const Certified_sign sb1 = orient(f0, f1, f2, b1), sb2 = orient(f0, f1, f2, b2);
-      if (strict(sb1) && sb1 == sb2) return false;
+      if (strictly_signed(sb1) && sb1 == sb2) return false;
       const Certified_sign sa1 = orient(g0, g1, g2, a1), sa2 = orient(g0, g1, g2, a2);
-      if (strict(sa1) && sa1 == sa2) return false;
+      if (strictly_signed(sa1) && sa1 == sa2) return false;
       return maybe_or(segment_meets_triangle(k, a1, a2, g0, g1, g2, sa1, sa2),
                       segment_meets_triangle(k, b1, b2, f0, f1, f2, sb1, sb2));
     }
     case 2: {
       const Index u = f[fi[0]], w = f[fi[1]];
       const Index a = f[3 - fi[0] - fi[1]], b = g[3 - gi[0] - gi[1]];
+      if (opposite_across_edge(k, point[u], point[w], point[a], point[b])) return false;
       const Certified_sign coplanar = k.orientation_3_object()(point[u], point[w], point[a], point[b]);
       if (coplanar == Certified_sign::positive || coplanar == Certified_sign::negative) return false;
       if (!is_certain(coplanar)) return std::nullopt;

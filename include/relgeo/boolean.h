@@ -1,6 +1,8 @@
 // relgeo/boolean.h — Booleans of closed triangle meshes under any
-// IntersectionKernel_3 (boolean/mesh_boolean.h), with their result types.
+// IntersectionKernel_3 (boolean/mesh_boolean.h), with their result types,
+// and CSG trees of many solids (boolean/csg.h).
 #pragma once
 
 #include "relgeo/boolean/boolean_types.h"
+#include "relgeo/boolean/csg.h"
 #include "relgeo/boolean/mesh_boolean.h"

@@ -1,11 +1,15 @@
 # Tests of `relgeo boolean` (included by CMakeLists.txt; uses relgeo_tool_test).
 set(_cube ${_data}/cube.off)
 set(_offset ${_data}/cube_offset.off)
-relgeo_tool_test(help_boolean 0 ARGS help boolean STDOUT_MATCHES "--op" "--oracle" "xor" "self_intersecting_pairs")
+relgeo_tool_test(help_boolean 0 ARGS help boolean STDOUT_MATCHES "--op" "--oracle" "xor" "self_intersecting_pairs" "--rounding")
 # Unit cube and the cube moved by (0.5, 0.25, 0.125): the overlap is 0.328125 exactly.
 relgeo_tool_test(boolean_intersection_json 0 STDOUT_JSON
   ARGS boolean ${_cube} ${_offset} --op intersection --format json
-  STDOUT_MATCHES "\"status\": \"ok\"," "\"value\": 0.328125," "\"valid_solid\": true," "\"euler_characteristic\": 2,")
+  STDOUT_MATCHES "\"status\": \"ok\"," "\"value\": 0.328125," "\"valid_solid\": true," "\"euler_characteristic\": 2,"
+                 "\"method\": \"repaired\"," "\"rounds\": 0,")
+relgeo_tool_test(boolean_rounding_nearest 0 STDOUT_JSON
+  ARGS boolean ${_cube} ${_offset} --op intersection --rounding nearest --format json
+  STDOUT_MATCHES "\"method\": \"nearest\"")
 relgeo_tool_test(boolean_union_outputs 0
   ARGS boolean ${_cube} ${_offset} --output ${_tmp}/union.off --tags-output ${_tmp}/union.tags
        --report ${_tmp}/union.json --png ${_tmp}/union.png
@@ -30,15 +34,16 @@ relgeo_tool_test(boolean_one_operand 2 ARGS boolean ${_cube})
 relgeo_tool_test(boolean_bad_op 2 ARGS boolean ${_cube} ${_offset} --op merge)
 relgeo_tool_test(boolean_cgal_kernel 2 ARGS boolean ${_cube} ${_offset} --kernel cgal-epick)
 relgeo_tool_test(boolean_missing_file 2 ARGS boolean ${_cube} ${_data}/no_such_file.off)
+relgeo_tool_test(boolean_bad_rounding 2 ARGS boolean ${_cube} ${_offset} --rounding snap)
 # The experiment's boolean section: every certified result a solid on the
-# oracle's volume (else exit 1); the exact kernel finds no crossing before
-# rounding where rounding makes the torus-sphere union cross itself, and the
-# section lists that result as crossing in doubles (not counted valid).
+# oracle's volume (else exit 1). Rounding to nearest doubles makes the
+# torus-sphere union cross itself; the repair of the rounding (the default)
+# leaves no crossing, and the section lists what it repaired.
 relgeo_tool_test(experiment_quick_boolean 0
   ARGS experiment --quick --quiet --only boolean --output ${_tmp}/results_boolean
-  STDOUT_MATCHES "sphere u sphere +union +filtered +ok" "torus u sphere +union +exact +ok +[0-9]+ +yes +yes +[1-9][0-9]* +0 "
-                 "valid before rounding that cross themselves in doubles:"
-                 "torus u sphere under exact: [1-9][0-9]* crossing face pairs after rounding"
+  STDOUT_MATCHES "sphere u sphere +union +filtered +ok" "torus u sphere +union +exact +ok +[0-9]+ +yes +yes +0 +0 "
+                 "whose rounding to doubles was repaired"
+                 "torus u sphere under exact: [1-9][0-9]* defects after nearest rounding; [0-9]+ vertices moved"
   FILES ${_tmp}/results_boolean/boolean.json ${_tmp}/results_boolean/boolean/sphere_u_sphere.png
         ${_tmp}/results_boolean/boolean/torus_u_sphere.png)
 

@@ -13,6 +13,7 @@
 #include "relgeo/core/errors.h"
 #include "relgeo/kernel/point.h"
 #include "relgeo/mesh/mesh_errors.h"
+#include "relgeo/mesh/rounding_repair.h"
 #include "relgeo/mesh/solid_validation.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
@@ -36,6 +37,9 @@ constexpr std::string_view to_string(Boolean_operation op) {
   return "?";
 }
 
+/// How a Boolean writes its new vertices in doubles (Boolean_options::rounding).
+enum class Output_rounding : std::uint8_t { nearest, repaired };
+
 /// Options of relgeo::boolean.
 struct Boolean_options {
   /// Refuse operands that are not closed, oriented 2-manifolds with finite
@@ -51,6 +55,17 @@ struct Boolean_options {
   /// its own exact points. False: the kernel's own arithmetic throughout
   /// (Exact_kernel: GMP rationals everywhere, the reference path).
   bool use_double_point_kernel = true;
+  /// How the new vertices become doubles. `repaired` (the default under a
+  /// certified kernel): nearest doubles, then the crossings and degenerate
+  /// faces that rounding made are repaired (repair_rounding,
+  /// mesh/rounding_repair.h), so that the output is a valid solid whenever
+  /// the exact result is one; Boolean_result::rounding reports it, and a
+  /// repair that does not converge fails the Boolean. `nearest`: each new
+  /// vertex its nearest doubles, nothing more. A kernel that is not certified
+  /// always rounds to nearest (its result is not exact to begin with).
+  Output_rounding rounding = Output_rounding::repaired;
+  /// Options of the repair (its rounds and the largest change allowed).
+  Rounding_repair_options repair{};
   /// Validate the output mesh (validate_solid on its doubles, exact
   /// predicates whatever the kernel): Boolean_result::validation. Rounding
   /// to doubles can make an exact result touch or cross itself; the report
@@ -102,9 +117,11 @@ struct Surface_location {
 /// Seconds spent in each phase.
 struct Boolean_timing {
   double check = 0, broad_phase = 0, narrow_phase = 0, retriangulation = 0, labelling = 0, assembly = 0,
-         validation = 0;
+         rounding = 0, validation = 0;
   /// The Boolean itself: every phase but the output's validation.
-  double total() const { return check + broad_phase + narrow_phase + retriangulation + labelling + assembly; }
+  double total() const {
+    return check + broad_phase + narrow_phase + retriangulation + labelling + assembly + rounding;
+  }
 };
 
 /// How many of each thing the computation met.
@@ -138,8 +155,12 @@ struct Boolean_result {
   /// kernels): new_vertex_points[j] is output vertex first_new_vertex + j.
   std::vector<typename K::Implicit_point_3> new_vertex_points;
   /// The largest error of a rounded output coordinate (0 when every vertex is
-  /// an input vertex; infinite when the kernel cannot bound it).
+  /// an input vertex; infinite when the kernel cannot bound it); with the
+  /// repaired rounding, it includes the repair's largest change.
   double rounding_error = 0;
+  /// What the repair of the rounding found and did (all zero when the
+  /// rounding is `nearest` or nothing needed repair).
+  Rounding_repair_report rounding;
   /// Per output face: operand and input face.
   std::vector<Face_origin> provenance;
   /// Per output vertex: where it lies on A (index 0) and on B (index 1).

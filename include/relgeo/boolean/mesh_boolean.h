@@ -21,7 +21,11 @@
 //  6. assembly  the pieces the operation keeps, those of B flipped for a
 //               difference, coplanar overlaps kept once, vertices rounded to
 //               doubles with the kernel's stated error;
-//  7. validation  validate_solid on the output's doubles (exact tests).
+//  7. validation  validate_solid on the output's doubles (exact tests);
+//  8. rounding  what the rounding broke (crossings, degenerate faces: the
+//               validation finds them, or the repair itself without it) is
+//               repaired by local changes decided exactly
+//               (mesh/rounding_repair.h), and the output validated again.
 // Degenerate input is the normal case: shared vertices and edges, touching,
 // coplanar overlapping faces, identical operands are decided exactly under
 // exact kernels, and the result is regularised (coplanar pieces of opposite
@@ -103,8 +107,19 @@ class Boolean_engine {
     r.time.labelling = clock.lap();
     assemble(r);
     r.time.assembly = clock.lap();
+    // The validation, when asked for, tells whether the rounding broke
+    // anything (most outputs: no): only then does the repair look for it.
     if (options_.validate_output) r.validation = validate_solid<Check_kernel>(r.mesh, options_.validation);
     r.time.validation = clock.lap();
+    const bool repair = K::is_certified && options_.rounding == Output_rounding::repaired;
+    if (repair && !(options_.validate_output && rounding_kept_validity(r.validation))) {
+      repair_rounding_of(r);
+      r.time.rounding = clock.lap();
+      if (options_.validate_output && r.rounding.rounds > 0) {
+        r.validation = validate_solid<Check_kernel>(r.mesh, options_.validation);
+        r.time.validation += clock.lap();
+      }
+    }
     return r;
   }
 
@@ -655,6 +670,48 @@ class Boolean_engine {
     r.mesh.tags.set_creases(std::move(creases));  // sorted, each once
   }
 
+  // ---- 7. rounding ---------------------------------------------------------------------
+
+  // No crossing and no degenerate face: nothing rounding can have broken.
+  static bool rounding_kept_validity(const Solid_report& v) {
+    return v.self_intersection_free.passed() && v.non_degenerate_faces.passed();
+  }
+
+  // The new vertices may move (by one unit in the last place, or within the
+  // repair's tolerance); the per-vertex and per-face data follow the repair's
+  // renumbering.
+  void repair_rounding_of(Result& r) {
+    std::vector<char> movable(r.mesh.vertices.size(), 0);
+    std::fill(movable.begin() + r.first_new_vertex, movable.end(), 1);
+    Rounding_repair_maps maps;
+    r.rounding = repair_rounding(r.mesh, movable, options_.repair, &maps);
+    if (!r.rounding.converged()) {
+      r.status = Result::Status::failed;
+      r.failure = "rounding: " + std::to_string(r.rounding.remaining_pairs.size()) + " face pairs still meet and " +
+                  std::to_string(r.rounding.remaining_degenerate_faces.size()) + " faces are degenerate after " +
+                  std::to_string(r.rounding.rounds) +
+                  " rounds of repair (Boolean_result::rounding lists them; Output_rounding::nearest skips the repair)";
+    }
+    if (r.rounding.rounds == 0) return;  // nothing changed: nothing renumbered
+    std::vector<Face_origin> provenance(maps.face_origin.size());
+    for (Index f = 0; f < provenance.size(); ++f) provenance[f] = r.provenance[maps.face_origin[f]];
+    r.provenance = std::move(provenance);
+    std::vector<IP> new_points;
+    std::vector<std::array<Surface_location, 2>> locations(r.mesh.vertices.size());
+    Index first_new = 0;
+    for (Index v = 0; v < maps.vertex_map.size(); ++v) {
+      const Index w = maps.vertex_map[v];
+      if (w == invalid_index) continue;
+      locations[w] = r.vertex_locations[v];
+      if (v < r.first_new_vertex) ++first_new;
+      else new_points.push_back(std::move(r.new_vertex_points[v - r.first_new_vertex]));
+    }
+    r.first_new_vertex = first_new;
+    r.new_vertex_points = std::move(new_points);
+    r.vertex_locations = std::move(locations);
+    r.rounding_error += r.rounding.largest_change;
+  }
+
   // Where each output vertex lies on A and on B: input vertices are at
   // themselves; every intersection point was located exactly on its two
   // faces (the most specific location wins: vertex, then edge, then face).
@@ -723,6 +780,7 @@ Boolean_result<K> with_exact_points(Boolean_result<Filtered_exact_kernel>&& r) {
   out.undecided_pairs = std::move(r.undecided_pairs);
   out.mesh = std::move(r.mesh);
   out.rounding_error = r.rounding_error;
+  out.rounding = std::move(r.rounding);
   out.provenance = std::move(r.provenance);
   out.vertex_locations = std::move(r.vertex_locations);
   out.counts = r.counts;

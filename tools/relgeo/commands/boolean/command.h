@@ -23,6 +23,7 @@ struct Boolean_command_options {
   std::string png;                ///< picture of the result with its curves drawn
   std::string oracle;             ///< "cgal": compare with CGAL's corefinement (Epeck)
   bool skip_self_intersection_check = false;
+  std::string rounding = "repaired";  ///< repaired | nearest (Boolean_options::rounding)
   unsigned levels = 0;            ///< >= 1: the Boolean of two Loop subdivision solids at this level
   bool fit = false;               ///< with --levels: fit the control points near the curves
   Format format = Format::text;

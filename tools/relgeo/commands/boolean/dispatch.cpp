@@ -42,11 +42,14 @@ Boolean_run evaluate_boolean(const std::string& kernel, const Mesh_double& a, co
     using K = decltype(k);
     const auto r = relgeo::boolean(a, b, op, k, options);
     Boolean_run run = boolean_run_of(r, find_kernel(kernel).label());
+    if (K::is_certified && options.rounding == Output_rounding::repaired) run.rounding_method = "repaired";
     // Exact kernels whose implicit points are exact points (Exact_kernel,
-    // Epeck): the result before rounding, tested for self-intersections.
+    // Epeck): the result before rounding, tested for self-intersections
+    // (unless the repair of the rounding flipped or collapsed edges: those
+    // faces are not the exact result's).
     if constexpr (K::has_exact_constructions &&
                   requires { { r.exact_vertex(0).point } -> std::convertible_to<typename K::Point_3>; }) {
-      if (r.ok()) {
+      if (r.ok() && r.rounding.flips == 0 && r.rounding.collapses == 0) {
         Triangle_mesh<typename K::Point_3> exact;
         exact.faces = r.mesh.faces;
         for (const auto& v : r.exact_vertices()) exact.vertices.push_back(v.point);

@@ -20,6 +20,8 @@ const std::vector<std::string>& boolean_kernel_names();
 void validate_boolean_kernel(const std::string& name);
 /// union | intersection | difference | xor. \throws Usage_error otherwise.  [options.cpp]
 Boolean_operation parse_boolean_operation(const std::string& name);
+/// repaired | nearest. \throws Usage_error otherwise.  [options.cpp]
+Output_rounding parse_output_rounding(const std::string& name);
 
 /// One Boolean under one kernel.
 struct Boolean_run {
@@ -30,6 +32,8 @@ struct Boolean_run {
   std::vector<std::pair<Index, Index>> undecided_pairs;
   Mesh_double output;
   double rounding_error = 0;
+  std::string rounding_method = "nearest";  ///< repaired | nearest, as run
+  Rounding_repair_report rounding;
   std::vector<Face_origin> provenance;
   Boolean_counts counts;
   Boolean_timing time;

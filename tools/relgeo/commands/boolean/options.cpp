@@ -25,10 +25,15 @@ std::string boolean_help_footer() {
          "output, validation (validate_solid on the output's doubles: valid_solid, summary, checks {closed, "
          "edge_manifold, vertex_manifold, consistently_oriented, self_intersection_free, outward_oriented, ...: "
          "status, count, where}, euler_characteristic, components, genus, volume {value, exact, lower, upper}), "
-         "exact_self_intersecting_pairs (exact kernel: before rounding), rounding_error, counts, time_s {check, broad_phase, narrow_phase, retriangulation, labelling, "
-         "assembly, total, validation}, [oracle].\n"
-         "Rounding the exact result to doubles can make it touch or cross itself (CGAL issue 9154): the "
-         "validation says so and where.\n"
+         "exact_self_intersecting_pairs (exact kernel, when the repair changed no face: before rounding), "
+         "rounding_error, rounding {method, rounds, defects_before, moved_vertices, flips, collapses, largest_change, "
+         "remaining_pairs, remaining_degenerate_faces}, counts, time_s {check, broad_phase, narrow_phase, "
+         "retriangulation, labelling, assembly, rounding, total, validation}, [oracle].\n"
+         "Rounding the exact result to doubles can make it touch or cross itself (CGAL issue 9154). --rounding "
+         "repaired (the default under the filtered and exact kernels) repairs that by local changes decided exactly "
+         "(moves by one unit in the last place, flips under slivers, collapses of edges within 1e-9 of the model's "
+         "size) and fails the run (exit 1) when it cannot; --rounding nearest keeps the nearest doubles and the "
+         "validation says what crosses.\n"
          "A symmetric difference (xor) touches itself along the intersection curves: its non-manifold edges are "
          "expected.\n"
          "\nWith --levels K (K >= 1) the operands are Loop control meshes (their crease and corner tags from "
@@ -54,6 +59,12 @@ std::string boolean_help_footer() {
          std::string(exit_codes_text);
 }
 
+Output_rounding parse_output_rounding(const std::string& name) {
+  if (name == "repaired") return Output_rounding::repaired;
+  if (name == "nearest") return Output_rounding::nearest;
+  throw Usage_error("--rounding must be repaired or nearest (got '" + name + "')");
+}
+
 Boolean_operation parse_boolean_operation(const std::string& name) {
   for (Boolean_operation op : {Boolean_operation::union_of, Boolean_operation::intersection, Boolean_operation::difference,
                                Boolean_operation::symmetric_difference})
@@ -73,6 +84,9 @@ void declare_boolean_options(CLI::App& cmd, Boolean_command_options& o) {
   cmd.add_option("--oracle", o.oracle, "cgal: compare with CGAL's corefinement (Epeck)")->type_name("cgal");
   cmd.add_flag("--skip-self-intersection-check", o.skip_self_intersection_check,
                "do not test the operands for self-intersections (the other checks still run)");
+  cmd.add_option("--rounding", o.rounding,
+                 "repaired: repair what rounding to doubles breaks (default); nearest: nearest doubles only")
+      ->default_str("repaired");
   cmd.add_option("--levels", o.levels, "K >= 1: the Boolean of two Loop subdivision solids at level K")->type_name("K");
   cmd.add_option("--tags-a", o.tags_a, "with --levels: crease/corner tag file of A")->type_name("FILE");
   cmd.add_option("--tags-b", o.tags_b, "with --levels: crease/corner tag file of B")->type_name("FILE");

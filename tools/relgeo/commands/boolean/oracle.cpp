@@ -89,7 +89,7 @@ Oracle_comparison compare_with_cgal(const Mesh_double& a, const Mesh_double& b, 
   // Boolean (operands not checked: a rounded output may touch itself).
   if (op != Boolean_operation::symmetric_difference) {
     const auto x = relgeo::boolean(result, cgal, Boolean_operation::symmetric_difference, Filtered_exact_kernel{},
-                                   Boolean_options{.check_operands = false});
+                                   Boolean_options{.check_operands = false, .rounding = Output_rounding::nearest});
     if (x.ok()) {
       double v = 0;
       for (const auto& f : x.mesh.faces) {

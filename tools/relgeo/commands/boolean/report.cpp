@@ -33,12 +33,22 @@ io::Json boolean_report_json(const Boolean_report_input& in) {
   j["exact_self_intersecting_pairs"] =
       r.exact_self_intersecting_pairs ? io::Json(*r.exact_self_intersecting_pairs) : io::Json(nullptr);
   j["rounding_error"] = io::json_measure(r.rounding_error);
+  const Rounding_repair_report& rr = r.rounding;
+  j["rounding"] = {{"method", r.rounding_method},
+                   {"rounds", rr.rounds},
+                   {"defects_before", rr.defects_before},
+                   {"moved_vertices", rr.moved_vertices},
+                   {"flips", rr.flips},
+                   {"collapses", rr.collapses},
+                   {"largest_change", io::json_measure(rr.largest_change)},
+                   {"remaining_pairs", rr.remaining_pairs.size()},
+                   {"remaining_degenerate_faces", rr.remaining_degenerate_faces.size()}};
   j["counts"] = {{"candidate_pairs", r.counts.candidate_pairs},   {"intersecting_pairs", r.counts.intersecting_pairs},
                  {"coplanar_pairs", r.counts.coplanar_pairs},     {"new_vertices", r.counts.new_vertices},
                  {"split_faces", r.counts.split_faces},           {"patches", r.counts.patches}};
   j["time_s"] = {{"check", r.time.check},         {"broad_phase", r.time.broad_phase},
                  {"narrow_phase", r.time.narrow_phase}, {"retriangulation", r.time.retriangulation},
-                 {"labelling", r.time.labelling}, {"assembly", r.time.assembly},
+                 {"labelling", r.time.labelling}, {"assembly", r.time.assembly}, {"rounding", r.time.rounding},
                  {"total", r.time.total()},       {"validation", r.time.validation}};
   if (in.oracle) {
     const Oracle_comparison& o = *in.oracle;
@@ -76,12 +86,21 @@ std::string boolean_report_text(const Boolean_report_input& in) {
   }
   std::snprintf(buf, sizeof buf, "%.3g", r.rounding_error);
   s << "rounding error   " << buf << " (largest move of a new vertex to doubles)\n";
+  if (r.rounding.rounds > 0) {
+    std::snprintf(buf, sizeof buf, "%.3g", r.rounding.largest_change);
+    s << "rounding repair  " << r.rounding.defects_before << " defects after nearest rounding; " << r.rounding.moved_vertices
+      << " vertices moved, " << r.rounding.flips << " flips, " << r.rounding.collapses << " collapses in "
+      << r.rounding.rounds << " rounds (largest change " << buf << "); " << r.rounding.remaining_pairs.size()
+      << " crossing pairs left\n";
+  }
   s << "pairs            " << r.counts.candidate_pairs << " candidates, " << r.counts.intersecting_pairs << " intersecting ("
     << r.counts.coplanar_pairs << " coplanar); " << r.counts.new_vertices << " new vertices, " << r.counts.split_faces
     << " faces split, " << r.counts.patches << " patches\n";
-  std::snprintf(buf, sizeof buf, "%.4f s (check %.4f, broad %.4f, narrow %.4f, retriangulation %.4f, labelling %.4f, assembly %.4f)",
-                r.time.total(), r.time.check, r.time.broad_phase, r.time.narrow_phase, r.time.retriangulation, r.time.labelling,
-                r.time.assembly);
+  std::snprintf(buf, sizeof buf,
+                "%.4f s (check %.4f, broad %.4f, narrow %.4f, retriangulation %.4f, labelling %.4f, assembly %.4f, "
+                "rounding %.4f)",
+                r.time.total(), r.time.check, r.time.broad_phase, r.time.narrow_phase, r.time.retriangulation,
+                r.time.labelling, r.time.assembly, r.time.rounding);
   s << "time             " << buf << "\n";
   if (in.oracle) {
     const Oracle_comparison& o = *in.oracle;

@@ -30,6 +30,7 @@ Boolean_run boolean_run_of(const Boolean_result<K>& r, const std::string& kernel
   run.undecided_pairs = r.undecided_pairs;
   run.output = r.mesh;
   run.rounding_error = r.rounding_error;
+  run.rounding = r.rounding;
   run.provenance = r.provenance;
   run.counts = r.counts;
   run.time = r.time;

@@ -1,0 +1,117 @@
+// relgeo::csg: trees of unions, intersections and differences, evaluated with
+// the Boolean, every step validated; bad trees refused before any Boolean,
+// naming the node.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "boolean_chains.h"
+#include "relgeo/boolean/csg.h"
+
+namespace relgeo::test {
+namespace {
+
+using Kind = Csg_node::Kind;
+
+Csg_node cubes_tree() {
+  // (unit cube u the cube moved by (0.5, 0.25, 0.125)) - the unit cube moved by (1, 0, 0).
+  return Csg_node::operation(
+      Kind::difference,
+      {Csg_node::operation(Kind::union_of, {Csg_node::solid(cube(0, 0, 0, 1), "cube"),
+                                            Csg_node::solid(cube(0.5, 0.25, 0.125, 1), "offset")}),
+       Csg_node::solid(cube(1, 0, 0, 1), "next")});
+}
+
+TEST(Csg, ADifferenceOfAUnionHasItsExactVolume) {
+  const Csg_result r = csg(cubes_tree());
+  ASSERT_TRUE(r.ok()) << r.failure;
+  ASSERT_EQ(r.steps.size(), 2u);
+  EXPECT_EQ(r.steps[0].node, "root.0");
+  EXPECT_EQ(r.steps[1].node, "root");
+  EXPECT_EQ(r.steps[1].volume, 1.671875 - 0.328125);
+  EXPECT_EQ(r.steps[1].validation, "valid solid");
+  EXPECT_EQ(r.mesh.faces.size(), r.steps[1].faces);
+  const Csg_result exact = csg(cubes_tree(), Exact_kernel{});
+  ASSERT_TRUE(exact.ok()) << exact.failure;
+  EXPECT_EQ(exact.steps[1].volume, 1.34375);
+}
+
+TEST(Csg, AnNAryUnionIsTheUnionOfItsArguments) {
+  // Five spheres at once (a balanced reduction) and one after the other.
+  const Boolean_chain c = make_chain(Chain_family::fused_spheres, 4, 3, 2);
+  std::vector<Csg_node> args{Csg_node::solid(c.start)};
+  Csg_node sequential = Csg_node::solid(c.start);
+  for (const auto& [op, m] : c.steps) {
+    args.push_back(Csg_node::solid(m));
+    sequential = Csg_node::operation(Kind::union_of, {sequential, Csg_node::solid(m)});
+  }
+  const Csg_result at_once = csg(Csg_node::operation(Kind::union_of, args));
+  const Csg_result one_by_one = csg(sequential);
+  ASSERT_TRUE(at_once.ok()) << at_once.failure;
+  ASSERT_TRUE(one_by_one.ok()) << one_by_one.failure;
+  EXPECT_EQ(at_once.steps.size(), 4u);
+  EXPECT_EQ(at_once.steps[0].node, "root");
+  EXPECT_NEAR(at_once.steps.back().volume, one_by_one.steps.back().volume, 1e-12 * one_by_one.steps.back().volume);
+}
+
+TEST(Csg, TheDrilledSphereAsOneDifference) {
+  // The 24-step chain as one node: the sphere minus 24 prisms, each step
+  // valid (the intermediate results are not checked again as operands).
+  const Boolean_chain c = make_chain(Chain_family::drilled_sphere, 24);
+  std::vector<Csg_node> args{Csg_node::solid(c.start, "sphere")};
+  for (const auto& [op, m] : c.steps) args.push_back(Csg_node::solid(m, "prism"));
+  const Csg_result r = csg(Csg_node::operation(Kind::difference, args));
+  ASSERT_TRUE(r.ok()) << r.failure;
+  ASSERT_EQ(r.steps.size(), 24u);
+  for (const Csg_step& s : r.steps) EXPECT_EQ(s.validation, "valid solid");
+  EXPECT_GT(r.steps.back().volume, 0);
+  EXPECT_LT(r.steps.back().volume, 4.0 / 3 * 3.14159265358979 * 1.0001);
+}
+
+TEST(Csg, BadTreesAreRefusedBeforeAnyBooleanNamingTheNode) {
+  const auto node_of = [](const Csg_node& tree) {
+    try {
+      (void)csg(tree);
+    } catch (const Invalid_csg_node& e) {
+      return e.node();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(node_of(Csg_node::operation(Kind::union_of, {Csg_node::solid(cube(0, 0, 0, 1))})), "root");
+  EXPECT_EQ(node_of(Csg_node::operation(Kind::intersection, {})), "root");
+  Csg_node no_mesh;
+  EXPECT_EQ(node_of(Csg_node::operation(Kind::union_of, {Csg_node::solid(cube(0, 0, 0, 1)), no_mesh})), "root.1");
+  Mesh_double open = cube(0, 0, 0, 1);
+  open.faces.pop_back();
+  const Csg_node deep = Csg_node::operation(
+      Kind::difference,
+      {Csg_node::solid(cube(0, 0, 0, 1)),
+       Csg_node::operation(Kind::union_of, {Csg_node::solid(cube(2, 0, 0, 1)), Csg_node::solid(open, "open")})});
+  EXPECT_EQ(node_of(deep), "root.1.1");
+  try {
+    (void)csg(deep);
+  } catch (const Invalid_csg_node& e) {
+    EXPECT_NE(std::string(e.what()).find("boundary_edge"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Csg, AFailedStepStopsTheTreeAndSaysWhere) {
+  // A repair allowed no round: the torus-sphere union cannot be repaired,
+  // and the tree stops at that node with that step's mesh.
+  Csg_options o;
+  o.boolean.repair.max_rounds = 0;
+  const Csg_node tree = Csg_node::operation(
+      Kind::difference,
+      {Csg_node::operation(Kind::union_of, {Csg_node::solid(torus(1, 0.3, 24, 12)),
+                                            Csg_node::solid(rigidly_moved(icosphere(2), 0.3, 0.2, {0, 0, 0.05}))}),
+       Csg_node::solid(cube(5, 5, 5, 1))});
+  const Csg_result r = csg(tree, Filtered_exact_kernel{}, o);
+  EXPECT_FALSE(r.ok());
+  ASSERT_EQ(r.steps.size(), 1u);
+  EXPECT_EQ(r.failure.rfind("node root.0 (union, step 1): rounding:", 0), 0u) << r.failure;
+  EXPECT_FALSE(r.mesh.faces.empty());
+}
+
+}  // namespace
+}  // namespace relgeo::test

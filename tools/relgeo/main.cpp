@@ -87,6 +87,10 @@ int run(int argc, char** argv) {
                   "the Boolean (union, intersection, difference, xor) of two closed triangle meshes under a "
                   "kernel: exact under the filtered and exact kernels, validated, optionally against CGAL's",
                   boolean_help_footer(), &declare_boolean_options, &run_boolean_command),
+      add_command(app, "csg",
+                  "a CSG tree of mesh files (JSON: unions, intersections, differences) evaluated with the exact "
+                  "Boolean, every intermediate result a valid solid in doubles, reported step by step",
+                  csg_help_footer(), &declare_csg_options, &run_csg_command),
       add_command(app, "experiment",
                   "the kernel-comparison suite: tables on stdout; JSON, pictures and index.html in a results "
                   "folder",

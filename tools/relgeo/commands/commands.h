@@ -4,6 +4,7 @@
 #pragma once
 
 #include "commands/boolean/command.h"
+#include "commands/csg/command.h"
 #include "commands/experiment/command.h"
 #include "commands/extrusion/command.h"
 #include "commands/hull/command.h"

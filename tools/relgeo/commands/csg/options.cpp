@@ -1,0 +1,43 @@
+// tools/relgeo/commands/csg/options.cpp — `relgeo csg`'s options and help.
+#include "cli/options.h"
+#include "commands/csg/command.h"
+
+namespace relgeo::tool {
+
+std::string csg_help_footer() {
+  std::string kernels;
+  for (const std::string& n : csg_kernel_names()) kernels += (kernels.empty() ? "" : ", ") + n;
+  return "\nEvaluates a CSG tree of closed triangle meshes with relgeo's Boolean (relgeo::csg, doc/boolean.md, "
+         "\"CSG trees\"). TREE.json is a node: {\"op\": \"union\" | \"intersection\" | \"difference\", \"args\": "
+         "[NODE, NODE, ...]} or a leaf {\"mesh\": \"file.off\"} (OFF, OBJ, PLY, STL; paths relative to the JSON "
+         "file). A difference is its first argument minus all the others; unions and intersections of many "
+         "arguments are reduced pairwise.\n"
+         "The leaves are checked once (closed, oriented, manifold, no degenerate face, no self-intersection); "
+         "every intermediate result is validated and repaired after rounding (--rounding repaired, the "
+         "default), and is not checked again as the next operand.\n"
+         "Kernels: " + kernels + " (default filtered).\n"
+         "A bad tree (unknown op, fewer than two args, a missing or unreadable file, a leaf that is not a valid "
+         "solid) exits with 2 and one line naming the node (root, root.1 = root's second argument, ...). A step "
+         "that fails (a rounding that cannot be repaired, a result that is not a valid solid) exits with 1 and "
+         "names it; --output then holds that step's result.\n"
+         "JSON fields: tree, kernel, status, failure, steps [{node, operation, ok, failure, faces, volume, "
+         "validation, rounding {defects_before, moved_vertices, flips, collapses, largest_change, "
+         "remaining_pairs}, seconds}], output {vertices, faces, volume}, seconds (the Booleans; reading the files "
+         "not included), total_seconds (files read and written included).\n" +
+         std::string(exit_codes_text);
+}
+
+void declare_csg_options(CLI::App& cmd, Csg_command_options& o) {
+  cmd.add_option("tree", o.tree, "the CSG tree (JSON)")->type_name("TREE.json");
+  add_kernel_option(cmd, o.kernel, "filtered");
+  add_output_option(cmd, o.output, "output", "write the root's solid (format from the extension)");
+  add_output_option(cmd, o.report, "report", "write the JSON report");
+  cmd.add_option("--rounding", o.rounding,
+                 "repaired: repair what rounding to doubles breaks (default); nearest: nearest doubles only")
+      ->default_str("repaired");
+  cmd.add_flag("--skip-self-intersection-check", o.skip_self_intersection_check,
+               "do not test the leaves for self-intersections (the other checks still run)");
+  add_format_option(cmd, o.format);
+}
+
+}  // namespace relgeo::tool

@@ -98,7 +98,7 @@ sanitized_suites=(
   relgeo_linear_tests relgeo_curves_tests relgeo_extrusion_tests
   relgeo_mesh_tests relgeo_mesh_solid_tests relgeo_subdivision_tests relgeo_subdivision_limit_tests
   relgeo_subdivision_bounds_tests relgeo_intersection_tests relgeo_boolean_tests relgeo_boolean_environment_tests
-  relgeo_subdivision_boolean_tests relgeo_limit_embedding_tests
+  relgeo_subdivision_boolean_tests relgeo_limit_embedding_tests relgeo_boolean_rounding_tests
 )
 
 run_sanitized_tests() {

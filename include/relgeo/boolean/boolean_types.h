@@ -60,7 +60,9 @@ struct Boolean_options {
   /// faces that rounding made are repaired (repair_rounding,
   /// mesh/rounding_repair.h), so that the output is a valid solid whenever
   /// the exact result is one; Boolean_result::rounding reports it, and a
-  /// repair that does not converge fails the Boolean. `nearest`: each new
+  /// repair that does not converge fails the Boolean (unless the output is
+  /// not a closed manifold anyway: a symmetric difference, solids that touch
+  /// along an edge; the validation says so). `nearest`: each new
   /// vertex its nearest doubles, nothing more. A kernel that is not certified
   /// always rounds to nearest (its result is not exact to begin with).
   Output_rounding rounding = Output_rounding::repaired;

@@ -119,6 +119,12 @@ class Boolean_engine {
         r.validation = validate_solid<Check_kernel>(r.mesh, options_.validation);
         r.time.validation += clock.lap();
       }
+      // A repair that did not converge fails the Boolean, unless the output
+      // is not a closed manifold anyway (a symmetric difference, solids that
+      // touch): then the validation says what is wrong, as with nearest
+      // rounding, and `rounding` what is left.
+      if (!r.rounding.converged() && !(options_.validate_output && !closed_manifold(r.validation)))
+        fail_rounding(r);
     }
     return r;
   }
@@ -672,6 +678,17 @@ class Boolean_engine {
 
   // ---- 7. rounding ---------------------------------------------------------------------
 
+  static bool closed_manifold(const Solid_report& v) {
+    return v.closed.passed() && v.edge_manifold.passed() && v.vertex_manifold.passed();
+  }
+  static void fail_rounding(Result& r) {
+    r.status = Result::Status::failed;
+    r.failure = "rounding: " + std::to_string(r.rounding.remaining_pairs.size()) + " face pairs still meet and " +
+                std::to_string(r.rounding.remaining_degenerate_faces.size()) + " faces are degenerate after " +
+                std::to_string(r.rounding.rounds) +
+                " rounds of repair (Boolean_result::rounding lists them; Output_rounding::nearest skips the repair)";
+  }
+
   // No crossing and no degenerate face: nothing rounding can have broken.
   static bool rounding_kept_validity(const Solid_report& v) {
     return v.self_intersection_free.passed() && v.non_degenerate_faces.passed();
@@ -685,13 +702,6 @@ class Boolean_engine {
     std::fill(movable.begin() + r.first_new_vertex, movable.end(), 1);
     Rounding_repair_maps maps;
     r.rounding = repair_rounding(r.mesh, movable, options_.repair, &maps);
-    if (!r.rounding.converged()) {
-      r.status = Result::Status::failed;
-      r.failure = "rounding: " + std::to_string(r.rounding.remaining_pairs.size()) + " face pairs still meet and " +
-                  std::to_string(r.rounding.remaining_degenerate_faces.size()) + " faces are degenerate after " +
-                  std::to_string(r.rounding.rounds) +
-                  " rounds of repair (Boolean_result::rounding lists them; Output_rounding::nearest skips the repair)";
-    }
     if (r.rounding.rounds == 0) return;  // nothing changed: nothing renumbered
     std::vector<Face_origin> provenance(maps.face_origin.size());
     for (Index f = 0; f < provenance.size(); ++f) provenance[f] = r.provenance[maps.face_origin[f]];

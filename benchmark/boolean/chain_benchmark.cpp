@@ -1,0 +1,149 @@
+// relgeo_chain_benchmark — the three 24-step CSG chains of
+// test/boolean/boolean_chains.h (a drilled sphere, fused spheres, a slab with
+// boxes), each operation on the result of the last, side by side in one run:
+//   relgeo csg            relgeo::csg, Filtered_exact_kernel, repaired rounding
+//   relgeo nearest        relgeo::boolean step by step, nearest rounding
+//   CGAL Epick            corefine_and_compute_* on Surface_mesh<Epick>
+//   CGAL Epeck            the same on Surface_mesh<Epeck> (kept exact in memory)
+// A chain stops at a step that fails or refuses its operand. Counters: steps
+// completed, the final face count and smallest angle (degrees), and whether
+// the final mesh is a valid solid (relgeo's exact validation, outside the
+// timing). Usage: relgeo_chain_benchmark [--levels=N] [google-benchmark flags].
+#include <benchmark/benchmark.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "boolean/boolean_chains.h"
+#include "relgeo/boolean.h"
+#include "relgeo/mesh/cgal_conversion.h"
+#include "relgeo/mesh/solid_validation.h"
+
+namespace {
+
+using namespace relgeo;
+using relgeo::test::Boolean_chain;
+using relgeo::test::Chain_family;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+int sphere_levels = 3;
+
+struct Chain_outcome {
+  int steps = 0;
+  Mesh_double mesh;
+};
+
+// The smallest interior angle of any face, in degrees.
+double smallest_angle(const Mesh_double& m) {
+  double best = 180;
+  for (const Triangle& t : m.faces)
+    for (int i = 0; i < 3; ++i) {
+      const auto& p = m.vertices[t[i]];
+      const auto& q = m.vertices[t[(i + 1) % 3]];
+      const auto& r = m.vertices[t[(i + 2) % 3]];
+      const double ux = q.x - p.x, uy = q.y - p.y, uz = q.z - p.z, vx = r.x - p.x, vy = r.y - p.y, vz = r.z - p.z;
+      const double cross = std::hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
+      best = std::min(best, std::atan2(cross, ux * vx + uy * vy + uz * vz) * 180 / 3.14159265358979323846);
+    }
+  return best;
+}
+
+void report(benchmark::State& state, const Chain_outcome& o) {
+  state.counters["steps"] = o.steps;
+  state.counters["faces"] = static_cast<double>(o.mesh.faces.size());
+  state.counters["min_angle_deg"] = o.mesh.faces.empty() ? 0 : smallest_angle(o.mesh);
+  state.counters["valid"] = !o.mesh.faces.empty() && validate_solid(o.mesh).is_valid_solid();
+}
+
+Chain_outcome run_csg(const Boolean_chain& c) {
+  Csg_node tree = Csg_node::solid(c.start);
+  for (const auto& [op, m] : c.steps) {
+    const auto kind = op == Boolean_operation::union_of       ? Csg_node::Kind::union_of
+                      : op == Boolean_operation::intersection ? Csg_node::Kind::intersection
+                                                              : Csg_node::Kind::difference;
+    tree = Csg_node::operation(kind, {std::move(tree), Csg_node::solid(m)});
+  }
+  const Csg_result r = csg(tree);
+  return {static_cast<int>(std::count_if(r.steps.begin(), r.steps.end(), [](const Csg_step& s) { return s.ok; })),
+          r.mesh};
+}
+
+Chain_outcome run_nearest(const Boolean_chain& c) {
+  Chain_outcome o{0, c.start};
+  Boolean_options options;
+  options.rounding = Output_rounding::nearest;
+  for (const auto& [op, m] : c.steps) {
+    try {
+      auto r = boolean(o.mesh, m, op, Filtered_exact_kernel{}, options);
+      if (!r.ok()) break;
+      o.mesh.vertices = std::move(r.mesh.vertices);
+      o.mesh.faces = std::move(r.mesh.faces);
+      ++o.steps;
+    } catch (const Invalid_operand&) {
+      break;  // the last output crosses itself
+    }
+  }
+  return o;
+}
+
+template <class K>
+Chain_outcome run_cgal(const Boolean_chain& c) {
+  using Surface = CGAL::Surface_mesh<typename K::Point_3>;
+  Surface current = to_surface_mesh<typename K::Point_3>(c.start);
+  int steps = 0;
+  for (const auto& [op, m] : c.steps) {
+    Surface operand = to_surface_mesh<typename K::Point_3>(m), out;
+    bool ok = false;
+    try {
+      switch (op) {
+        case Boolean_operation::union_of: ok = PMP::corefine_and_compute_union(current, operand, out); break;
+        case Boolean_operation::intersection: ok = PMP::corefine_and_compute_intersection(current, operand, out); break;
+        default: ok = PMP::corefine_and_compute_difference(current, operand, out);
+      }
+    } catch (const std::exception&) {
+      ok = false;  // a self-intersecting operand
+    }
+    if (!ok) break;
+    current = std::move(out);
+    ++steps;
+  }
+  return {steps, from_surface_mesh<Point_3<double>>(current)};
+}
+
+template <Chain_outcome (*Run)(const Boolean_chain&)>
+void chain(benchmark::State& state, Chain_family family) {
+  const Boolean_chain c = relgeo::test::make_chain(family, 24, 7, sphere_levels);
+  Chain_outcome o;
+  for (auto _ : state) o = Run(c);
+  report(state, o);
+}
+
+void register_all() {
+  for (Chain_family f : {Chain_family::drilled_sphere, Chain_family::fused_spheres, Chain_family::slab_and_boxes}) {
+    const std::string name = std::string(to_string(f));
+    for (auto [subject, fn] : std::initializer_list<std::pair<const char*, void (*)(benchmark::State&, Chain_family)>>{
+             {"relgeo csg", &chain<&run_csg>},
+             {"relgeo nearest", &chain<&run_nearest>},
+             {"CGAL Epick", &chain<&run_cgal<CGAL::Epick>>},
+             {"CGAL Epeck", &chain<&run_cgal<CGAL::Epeck>>}})
+      benchmark::RegisterBenchmark((name + "/" + subject).c_str(), fn, f)->Unit(benchmark::kSecond)->Iterations(1);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strncmp(argv[i], "--levels=", 9) == 0) sphere_levels = std::atoi(argv[i] + 9);
+  benchmark::Initialize(&argc, argv);
+  register_all();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+}

@@ -28,7 +28,9 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <optional>
+#include <type_traits>
 
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/mesh/internal/embedded_stars.h"
@@ -91,10 +93,62 @@ Maybe segment_meets_triangle(const K& k, const typename K::Point_3& p, const typ
   return true;
 }
 
+inline bool strictly_signed(Certified_sign s) { return s == Certified_sign::positive || s == Certified_sign::negative; }
+
+/// Nearly parallel triangles (double coordinates whose normals, computed in
+/// doubles, are within about a degree) are certainly disjoint when, in the
+/// axis projection along the largest component of the first normal, the line
+/// of an edge of one strictly separates the other: a point they shared would
+/// project into both images. Decides the nearly coplanar pairs of a rounded
+/// planar region from 2D signs, where the 3D orientations need exact
+/// arithmetic; false (no decision) otherwise.
+template <class K>
+bool separated_in_projection(const K& k, const std::array<const typename K::Point_3*, 3>& a,
+                             const std::array<const typename K::Point_3*, 3>& b) {
+  using A = Point_access<typename K::Point_3>;
+  if constexpr (!std::is_same_v<std::remove_cvref_t<typename A::FT>, double>) {
+    return false;
+  } else {
+    const auto normal = [](const std::array<const typename K::Point_3*, 3>& t) {
+      const double ux = A::x(*t[1]) - A::x(*t[0]), uy = A::y(*t[1]) - A::y(*t[0]), uz = A::z(*t[1]) - A::z(*t[0]);
+      const double vx = A::x(*t[2]) - A::x(*t[0]), vy = A::y(*t[2]) - A::y(*t[0]), vz = A::z(*t[2]) - A::z(*t[0]);
+      return std::array<double, 3>{uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+    };
+    const std::array<double, 3> na = normal(a), nb = normal(b);
+    const double dot = na[0] * nb[0] + na[1] * nb[1] + na[2] * nb[2];
+    const double la = std::sqrt(na[0] * na[0] + na[1] * na[1] + na[2] * na[2]);
+    const double lb = std::sqrt(nb[0] * nb[0] + nb[1] * nb[1] + nb[2] * nb[2]);
+    if (!(std::abs(dot) >= 0.9998 * la * lb) || !(la > 0)) return false;  // (a wrong guess costs time only)
+    const double ax = std::abs(na[0]), ay = std::abs(na[1]), az = std::abs(na[2]);
+    const int plane = az >= ax && az >= ay ? 0 : (ax >= ay ? 1 : 2);  // xy, yz or zx (project_to_plane)
+    const auto orient = k.orientation_2_object();
+    using P2 = typename K::Point_2;
+    const std::array<P2, 3> pa{project_to_plane<K>(*a[0], plane), project_to_plane<K>(*a[1], plane),
+                               project_to_plane<K>(*a[2], plane)};
+    const std::array<P2, 3> pb{project_to_plane<K>(*b[0], plane), project_to_plane<K>(*b[1], plane),
+                               project_to_plane<K>(*b[2], plane)};
+    const auto edge_separates = [&](const std::array<P2, 3>& t, const std::array<P2, 3>& other) {
+      for (int i = 0; i < 3; ++i) {
+        const Certified_sign own = orient(t[i], t[(i + 1) % 3], t[(i + 2) % 3]);
+        if (!strictly_signed(own)) return false;  // the projection flattens t: no decision
+        bool all_opposite = true;
+        for (int j = 0; j < 3 && all_opposite; ++j) {
+          const Certified_sign s = orient(t[i], t[(i + 1) % 3], other[j]);
+          all_opposite = strictly_signed(s) && s != own;
+        }
+        if (all_opposite) return true;
+      }
+      return false;
+    };
+    return edge_separates(pa, pb) || edge_separates(pb, pa);
+  }
+}
+
 /// Whether the closed triangles a and b intersect. \pre neither is degenerate.
 template <class K>
 Maybe triangles_meet(const K& k, const std::array<const typename K::Point_3*, 3>& a,
                      const std::array<const typename K::Point_3*, 3>& b) {
+  if (separated_in_projection(k, a, b)) return false;
   const auto orient = k.orientation_3_object();
   const auto one_side = [](const std::array<Certified_sign, 3>& s) {
     return s[0] == s[1] && s[1] == s[2] && (s[0] == Certified_sign::positive || s[0] == Certified_sign::negative);
@@ -112,11 +166,6 @@ Maybe triangles_meet(const K& k, const std::array<const typename K::Point_3*, 3>
   }
   return meet;
 }
-
-/// Whether faces f and g (vertex indices, points through `point`) meet
-/// other than in the vertices and edge they share (file comment).
-/// \pre neither face is degenerate.
-inline bool strictly_signed(Certified_sign s) { return s == Certified_sign::positive || s == Certified_sign::negative; }
 
 /// Faces (v, a1, a2) and (v, b1, b2) sharing only v certainly meet in v
 /// only when, in the first coordinate plane where both project with a
@@ -168,6 +217,9 @@ bool opposite_across_edge(const K& k, const typename K::Point_3& u, const typena
   return false;
 }
 
+/// Whether faces f and g (vertex indices, points through `point`) meet
+/// other than in the vertices and edge they share (file comment).
+/// \pre neither face is degenerate.
 template <class K, class Points>
 Maybe faces_meet_beyond_shared(const K& k, const Points& point, const Triangle& f, const Triangle& g) {
   int shared = 0, fi[3], gi[3];

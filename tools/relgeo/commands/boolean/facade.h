@@ -12,6 +12,10 @@
 #include "relgeo/boolean/boolean_types.h"
 #include "render/mesh_render.h"
 
+namespace CLI {
+class App;
+}  // namespace CLI
+
 namespace relgeo::tool {
 
 /// The kernels `boolean` accepts (those modelling IntersectionKernel_3).  [dispatch.cpp]
@@ -22,6 +26,8 @@ void validate_boolean_kernel(const std::string& name);
 Boolean_operation parse_boolean_operation(const std::string& name);
 /// repaired | nearest. \throws Usage_error otherwise.  [options.cpp]
 Output_rounding parse_output_rounding(const std::string& name);
+/// --rounding repaired|nearest (boolean and csg).  [options.cpp]
+void add_rounding_option(CLI::App& cmd, std::string& rounding);
 
 /// One Boolean under one kernel.
 struct Boolean_run {

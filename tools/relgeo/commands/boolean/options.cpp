@@ -65,6 +65,12 @@ Output_rounding parse_output_rounding(const std::string& name) {
   throw Usage_error("--rounding must be repaired or nearest (got '" + name + "')");
 }
 
+void add_rounding_option(CLI::App& cmd, std::string& rounding) {
+  cmd.add_option("--rounding", rounding,
+                 "repaired: repair what rounding to doubles breaks (default); nearest: nearest doubles only")
+      ->default_str("repaired");
+}
+
 Boolean_operation parse_boolean_operation(const std::string& name) {
   for (Boolean_operation op : {Boolean_operation::union_of, Boolean_operation::intersection, Boolean_operation::difference,
                                Boolean_operation::symmetric_difference})
@@ -84,9 +90,7 @@ void declare_boolean_options(CLI::App& cmd, Boolean_command_options& o) {
   cmd.add_option("--oracle", o.oracle, "cgal: compare with CGAL's corefinement (Epeck)")->type_name("cgal");
   cmd.add_flag("--skip-self-intersection-check", o.skip_self_intersection_check,
                "do not test the operands for self-intersections (the other checks still run)");
-  cmd.add_option("--rounding", o.rounding,
-                 "repaired: repair what rounding to doubles breaks (default); nearest: nearest doubles only")
-      ->default_str("repaired");
+  add_rounding_option(cmd, o.rounding);
   cmd.add_option("--levels", o.levels, "K >= 1: the Boolean of two Loop subdivision solids at level K")->type_name("K");
   cmd.add_option("--tags-a", o.tags_a, "with --levels: crease/corner tag file of A")->type_name("FILE");
   cmd.add_option("--tags-b", o.tags_b, "with --levels: crease/corner tag file of B")->type_name("FILE");

@@ -1,5 +1,6 @@
 // tools/relgeo/commands/csg/options.cpp — `relgeo csg`'s options and help.
 #include "cli/options.h"
+#include "commands/boolean/facade.h"
 #include "commands/csg/command.h"
 
 namespace relgeo::tool {
@@ -32,9 +33,7 @@ void declare_csg_options(CLI::App& cmd, Csg_command_options& o) {
   add_kernel_option(cmd, o.kernel, "filtered");
   add_output_option(cmd, o.output, "output", "write the root's solid (format from the extension)");
   add_output_option(cmd, o.report, "report", "write the JSON report");
-  cmd.add_option("--rounding", o.rounding,
-                 "repaired: repair what rounding to doubles breaks (default); nearest: nearest doubles only")
-      ->default_str("repaired");
+  add_rounding_option(cmd, o.rounding);
   cmd.add_flag("--skip-self-intersection-check", o.skip_self_intersection_check,
                "do not test the leaves for self-intersections (the other checks still run)");
   add_format_option(cmd, o.format);

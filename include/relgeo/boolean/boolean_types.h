@@ -146,8 +146,9 @@ struct Boolean_result {
   /// Face pairs the kernel could not decide (fail-safe and interval kernels;
   /// no vertex is moved to decide them: doc/boolean.md, "The kernels").
   std::vector<std::pair<Index, Index>> undecided_pairs;
-  /// The output mesh in doubles (each vertex the nearest the kernel can
-  /// give), the intersection curves tagged as creases. Its vertices are the
+  /// The output mesh in doubles (each new vertex the nearest the kernel can
+  /// give, or moved by the rounding repair: `rounding`), the intersection
+  /// curves tagged as creases. Its vertices are the
   /// input vertices it keeps (exactly), then from `first_new_vertex` on the
   /// new ones (intersection points, rounded).
   Triangle_mesh<Point_3<double>> mesh;

@@ -20,10 +20,11 @@ namespace relgeo {
 ///
 /// Requires an IntersectionKernel_3. Exact under kernels with exact
 /// predicates (Filtered_exact_kernel, the default, and Exact_kernel): the
-/// result's exact_vertex(i) are the exact points, its mesh their nearest
-/// doubles (rounding_error says how far; rounding can make the rounded mesh
-/// cross itself where the operands cross at a small angle: the output's
-/// validation, Boolean_result::validation, says so and where). Fail-safe and interval kernels
+/// result's exact_vertex(i) are the exact points, its mesh their doubles
+/// (rounding_error says how far): the nearest ones, repaired where rounding
+/// made the mesh cross itself or a face degenerate (options.rounding; a
+/// repair that cannot converge fails the Boolean), and validated
+/// (Boolean_result::validation). Fail-safe and interval kernels
 /// give the same result or a failure naming the face pairs they cannot
 /// decide (no vertex is moved: doc/boolean.md, "The kernels"); naive
 /// kernels give what their arithmetic gives, never a crash.

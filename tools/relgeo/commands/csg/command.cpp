@@ -2,7 +2,6 @@
 // meshes, evaluate, write the solid and the report.
 #include "commands/csg/command.h"
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -106,9 +105,7 @@ Csg_node parse_csg_tree(const std::string& json_file) {
 
 int run_csg_command(const Csg_command_options& o, Streams io) {
   if (o.tree.empty()) throw Usage_error("a tree is needed: relgeo csg TREE.json");
-  const auto& names = csg_kernel_names();
-  if (std::find(names.begin(), names.end(), o.kernel) == names.end())
-    evaluate_csg(o.kernel, {}, {});  // throws Usage_error listing the kernels, before any file is read
+  validate_csg_kernel(o.kernel);  // before any file is read
   internal::Stopwatch clock;
   Csg_options options;
   options.boolean.rounding = parse_output_rounding(o.rounding);

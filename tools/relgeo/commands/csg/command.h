@@ -29,6 +29,8 @@ void declare_csg_options(CLI::App& cmd, Csg_command_options& options);
 
 /// The kernels `csg` runs (those relgeo::compiled instantiates).   [dispatch.cpp]
 const std::vector<std::string>& csg_kernel_names();
+/// \throws Usage_error, listing them, unless `name` is one of those kernels.
+void validate_csg_kernel(const std::string& name);
 /// relgeo::csg under the kernel named. \throws Usage_error for another name.
 Csg_result evaluate_csg(const std::string& kernel, const Csg_node& tree, const Csg_options& options);
 

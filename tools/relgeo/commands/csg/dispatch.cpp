@@ -1,6 +1,8 @@
 // tools/relgeo/commands/csg/dispatch.cpp — relgeo::csg under the kernels
 // relgeo::compiled instantiates the Boolean for (the only TU of `csg` that
 // names kernel types).
+#include <algorithm>
+
 #include "commands/csg/command.h"
 #include "cli/text.h"
 #include "relgeo/boolean.h"
@@ -13,13 +15,19 @@ const std::vector<std::string>& csg_kernel_names() {
   return names;
 }
 
+void validate_csg_kernel(const std::string& name) {
+  const auto& names = csg_kernel_names();
+  if (std::find(names.begin(), names.end(), name) != names.end()) return;
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  throw Usage_error("csg: kernel '" + name + "' is not one of " + list);
+}
+
 Csg_result evaluate_csg(const std::string& kernel, const Csg_node& tree, const Csg_options& options) {
-  if (kernel == "filtered") return csg(tree, Filtered_exact_kernel{}, options);
+  validate_csg_kernel(kernel);
   if (kernel == "exact") return csg(tree, Exact_kernel{}, options);
   if (kernel == "double") return csg(tree, Naive_kernel<double>{}, options);
-  std::string list;
-  for (const std::string& n : csg_kernel_names()) list += (list.empty() ? "" : ", ") + n;
-  throw Usage_error("csg: kernel '" + kernel + "' is not one of " + list);
+  return csg(tree, Filtered_exact_kernel{}, options);
 }
 
 }  // namespace relgeo::tool

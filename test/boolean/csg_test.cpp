@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "boolean_chains.h"
@@ -90,6 +91,12 @@ TEST(Csg, BadTreesAreRefusedBeforeAnyBooleanNamingTheNode) {
       {Csg_node::solid(cube(0, 0, 0, 1)),
        Csg_node::operation(Kind::union_of, {Csg_node::solid(cube(2, 0, 0, 1)), Csg_node::solid(open, "open")})});
   EXPECT_EQ(node_of(deep), "root.1.1");
+  Mesh_double not_finite = cube(0, 0, 0, 1), empty;
+  not_finite.vertices[3].z = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(node_of(Csg_node::operation(Kind::union_of, {Csg_node::solid(not_finite), Csg_node::solid(cube(2, 0, 0, 1))})),
+            "root.0");
+  EXPECT_EQ(node_of(Csg_node::operation(Kind::intersection, {Csg_node::solid(cube(0, 0, 0, 1)), Csg_node::solid(empty)})),
+            "root.1");
   try {
     (void)csg(deep);
   } catch (const Invalid_csg_node& e) {

@@ -54,7 +54,8 @@ constexpr std::string_view to_string(Csg_node::Kind k) {
 }
 
 /// A tree that cannot be evaluated: an operation with fewer than two
-/// arguments, a leaf without a mesh, a leaf that is not a valid solid.
+/// arguments, a leaf without a mesh or without faces, a leaf that is not a
+/// valid solid.
 /// `node()` names it by its path: "root", "root.1" (root's second
 /// argument), "root.1.0", ...
 class Invalid_csg_node : public Invalid_input {
@@ -118,6 +119,7 @@ class Csg_evaluator {
   void check(const Csg_node& n, const std::string& path) const {
     if (n.kind == Csg_node::Kind::solid) {
       if (!n.mesh) throw Invalid_csg_node(path, "a solid without a mesh");
+      if (n.mesh->faces.empty()) throw Invalid_csg_node(path, "solid '" + n.name + "' has no faces");
       if (!options_.boolean.check_operands) return;
       const Mesh_report report = options_.boolean.check_self_intersections ? check_solid(*n.mesh) : check_mesh(*n.mesh);
       if (!report.is_valid())

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "commands/boolean/facade.h"
+#include "commands/boolean/report.h"
 #include "experiment/section.h"
 #include "relgeo/mesh/shapes.h"
 #include "render/mesh_render.h"
@@ -156,13 +157,7 @@ Section_report boolean_section(const Experiment_context& ctx) {
       j["valid"] = valid;
       j["valid_before_rounding"] = valid_exact;
       j["validation"] = run.ok || rounding_failed ? Json(run.validation.summary()) : Json(nullptr);
-      j["rounding"] = {{"method", run.rounding_method},
-                       {"defects_before", run.rounding.defects_before},
-                       {"moved_vertices", run.rounding.moved_vertices},
-                       {"flips", run.rounding.flips},
-                       {"collapses", run.rounding.collapses},
-                       {"largest_change", run.rounding.largest_change},
-                       {"remaining_pairs", run.rounding.remaining_pairs.size()}};
+      j["rounding"] = rounding_repair_json(run.rounding, run.rounding_method);
       j["rounded_self_intersecting_pairs"] = crossings;
       j["exact_self_intersecting_pairs"] =
           run.exact_self_intersecting_pairs ? Json(*run.exact_self_intersecting_pairs) : Json(nullptr);

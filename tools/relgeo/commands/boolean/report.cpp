@@ -17,6 +17,18 @@ io::Json operand_json(const std::string& file, const Mesh_double& m) {
   return {{"file", file}, {"vertices", m.vertices.size()}, {"faces", m.faces.size()}, {"volume", io::json_measure(v / 6)}};
 }
 
+io::Json rounding_repair_json(const Rounding_repair_report& r, const std::string& method) {
+  return {{"method", method},
+          {"rounds", r.rounds},
+          {"defects_before", r.defects_before},
+          {"moved_vertices", r.moved_vertices},
+          {"flips", r.flips},
+          {"collapses", r.collapses},
+          {"largest_change", io::json_measure(r.largest_change)},
+          {"remaining_pairs", r.remaining_pairs.size()},
+          {"remaining_degenerate_faces", r.remaining_degenerate_faces.size()}};
+}
+
 io::Json boolean_report_json(const Boolean_report_input& in) {
   const Boolean_run& r = *in.run;
   const double volume = r.validation.volume.value;
@@ -33,16 +45,7 @@ io::Json boolean_report_json(const Boolean_report_input& in) {
   j["exact_self_intersecting_pairs"] =
       r.exact_self_intersecting_pairs ? io::Json(*r.exact_self_intersecting_pairs) : io::Json(nullptr);
   j["rounding_error"] = io::json_measure(r.rounding_error);
-  const Rounding_repair_report& rr = r.rounding;
-  j["rounding"] = {{"method", r.rounding_method},
-                   {"rounds", rr.rounds},
-                   {"defects_before", rr.defects_before},
-                   {"moved_vertices", rr.moved_vertices},
-                   {"flips", rr.flips},
-                   {"collapses", rr.collapses},
-                   {"largest_change", io::json_measure(rr.largest_change)},
-                   {"remaining_pairs", rr.remaining_pairs.size()},
-                   {"remaining_degenerate_faces", rr.remaining_degenerate_faces.size()}};
+  j["rounding"] = rounding_repair_json(r.rounding, r.rounding_method);
   j["counts"] = {{"candidate_pairs", r.counts.candidate_pairs},   {"intersecting_pairs", r.counts.intersecting_pairs},
                  {"coplanar_pairs", r.counts.coplanar_pairs},     {"new_vertices", r.counts.new_vertices},
                  {"split_faces", r.counts.split_faces},           {"patches", r.counts.patches}};

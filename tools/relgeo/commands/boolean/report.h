@@ -10,6 +10,11 @@
 
 namespace relgeo::tool {
 
+/// What the repair of the rounding did, as `boolean`, `csg` and the
+/// experiment report it: {method, rounds, defects_before, moved_vertices,
+/// flips, collapses, largest_change, remaining_pairs, remaining_degenerate_faces}.
+io::Json rounding_repair_json(const Rounding_repair_report& r, const std::string& method);
+
 struct Boolean_report_input {
   std::string operation, input_a, input_b;
   const Mesh_double* a = nullptr;

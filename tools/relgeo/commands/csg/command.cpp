@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "commands/boolean/facade.h"
+#include "commands/boolean/report.h"
 #include "relgeo/core/internal/stopwatch.h"
 #include "relgeo/io/errors.h"
 #include "relgeo/io/json.h"
@@ -45,6 +46,8 @@ Csg_node parse_node(const io::Json& j, const std::filesystem::path& base, const 
 }
 
 io::Json report_json(const Csg_command_options& o, const Csg_result& r, double total_seconds) {
+  // The double kernel is not certified: its Booleans round to nearest.
+  const std::string method = o.kernel == "double" ? "nearest" : o.rounding;
   io::Json j;
   j["tree"] = o.tree;
   j["kernel"] = o.kernel;
@@ -59,13 +62,7 @@ io::Json report_json(const Csg_command_options& o, const Csg_result& r, double t
                      {"faces", s.faces},
                      {"volume", io::json_measure(s.volume)},
                      {"validation", s.validation},
-                     {"rounding",
-                      {{"defects_before", s.rounding.defects_before},
-                       {"moved_vertices", s.rounding.moved_vertices},
-                       {"flips", s.rounding.flips},
-                       {"collapses", s.rounding.collapses},
-                       {"largest_change", io::json_measure(s.rounding.largest_change)},
-                       {"remaining_pairs", s.rounding.remaining_pairs.size()}}},
+                     {"rounding", rounding_repair_json(s.rounding, method)},
                      {"seconds", s.seconds}});
   }
   j["steps"] = steps;

@@ -22,8 +22,8 @@ std::string csg_help_footer() {
          "that fails (a rounding that cannot be repaired, a result that is not a valid solid) exits with 1 and "
          "names it; --output then holds that step's result.\n"
          "JSON fields: tree, kernel, status, failure, steps [{node, operation, ok, failure, faces, volume, "
-         "validation, rounding {defects_before, moved_vertices, flips, collapses, largest_change, "
-         "remaining_pairs}, seconds}], output {vertices, faces, volume}, seconds (the Booleans; reading the files "
+         "validation, rounding {method, rounds, defects_before, moved_vertices, flips, collapses, "
+         "largest_change, remaining_pairs, remaining_degenerate_faces}, seconds}], output {vertices, faces, volume}, seconds (the Booleans; reading the files "
          "not included), total_seconds (files read and written included).\n" +
          std::string(exit_codes_text);
 }

@@ -1,14 +1,20 @@
 // relgeo_chain_benchmark — the three 24-step CSG chains of
 // test/boolean/boolean_chains.h (a drilled sphere, fused spheres, a slab with
 // boxes), each operation on the result of the last, side by side in one run:
-//   relgeo csg            relgeo::csg, Filtered_exact_kernel, repaired rounding
+//   relgeo csg            relgeo::csg, Filtered_exact_kernel, the defaults
+//                         (constrained Delaunay faces, repaired rounding)
+//   relgeo csg insertion  the same with the insertion order's triangulation
+//                         (Boolean_options::delaunay_retriangulation = false)
 //   relgeo nearest        relgeo::boolean step by step, nearest rounding
+//   relgeo nearest insertion   nearest rounding of the insertion order's
+//                         triangulation: the engine before issue 28
 //   CGAL Epick            corefine_and_compute_* on Surface_mesh<Epick>
 //   CGAL Epeck            the same on Surface_mesh<Epeck> (kept exact in memory)
 // A chain stops at a step that fails or refuses its operand. Counters: steps
-// completed, the final face count and smallest angle (degrees), and whether
-// the final mesh is a valid solid (relgeo's exact validation, outside the
-// timing). Usage: relgeo_chain_benchmark [--levels=N] [google-benchmark flags].
+// completed, the final face count, its smallest angle (degrees) and faces
+// with an angle under one degree, and whether the final mesh is a valid
+// solid (relgeo's exact validation, outside the timing).
+// Usage: relgeo_chain_benchmark [--levels=N] [google-benchmark flags].
 #include <benchmark/benchmark.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -40,28 +46,36 @@ struct Chain_outcome {
   Mesh_double mesh;
 };
 
-// The smallest interior angle of any face, in degrees.
-double smallest_angle(const Mesh_double& m) {
+// The smallest interior angle of face t, in degrees.
+double smallest_angle(const Mesh_double& m, const Triangle& t) {
   double best = 180;
-  for (const Triangle& t : m.faces)
-    for (int i = 0; i < 3; ++i) {
-      const auto& p = m.vertices[t[i]];
-      const auto& q = m.vertices[t[(i + 1) % 3]];
-      const auto& r = m.vertices[t[(i + 2) % 3]];
-      const double ux = q.x - p.x, uy = q.y - p.y, uz = q.z - p.z, vx = r.x - p.x, vy = r.y - p.y, vz = r.z - p.z;
-      const double cross = std::hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
-      best = std::min(best, std::atan2(cross, ux * vx + uy * vy + uz * vz) * 180 / 3.14159265358979323846);
-    }
+  for (int i = 0; i < 3; ++i) {
+    const auto& p = m.vertices[t[i]];
+    const auto& q = m.vertices[t[(i + 1) % 3]];
+    const auto& r = m.vertices[t[(i + 2) % 3]];
+    const double ux = q.x - p.x, uy = q.y - p.y, uz = q.z - p.z, vx = r.x - p.x, vy = r.y - p.y, vz = r.z - p.z;
+    const double cross = std::hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
+    best = std::min(best, std::atan2(cross, ux * vx + uy * vy + uz * vz) * 180 / 3.14159265358979323846);
+  }
   return best;
 }
 
 void report(benchmark::State& state, const Chain_outcome& o) {
+  double smallest = o.mesh.faces.empty() ? 0 : 180;
+  std::size_t needles = 0;
+  for (const Triangle& t : o.mesh.faces) {
+    const double a = smallest_angle(o.mesh, t);
+    smallest = std::min(smallest, a);
+    needles += a < 1;
+  }
   state.counters["steps"] = o.steps;
   state.counters["faces"] = static_cast<double>(o.mesh.faces.size());
-  state.counters["min_angle_deg"] = o.mesh.faces.empty() ? 0 : smallest_angle(o.mesh);
+  state.counters["min_angle_deg"] = smallest;
+  state.counters["under_1deg"] = static_cast<double>(needles);
   state.counters["valid"] = !o.mesh.faces.empty() && validate_solid(o.mesh).is_valid_solid();
 }
 
+template <bool Delaunay>
 Chain_outcome run_csg(const Boolean_chain& c) {
   Csg_node tree = Csg_node::solid(c.start);
   for (const auto& [op, m] : c.steps) {
@@ -70,15 +84,19 @@ Chain_outcome run_csg(const Boolean_chain& c) {
                                                               : Csg_node::Kind::difference;
     tree = Csg_node::operation(kind, {std::move(tree), Csg_node::solid(m)});
   }
-  const Csg_result r = csg(tree);
+  Csg_options options;
+  options.boolean.delaunay_retriangulation = Delaunay;
+  const Csg_result r = csg(tree, Filtered_exact_kernel{}, options);
   return {static_cast<int>(std::count_if(r.steps.begin(), r.steps.end(), [](const Csg_step& s) { return s.ok; })),
           r.mesh};
 }
 
+template <bool Delaunay>
 Chain_outcome run_nearest(const Boolean_chain& c) {
   Chain_outcome o{0, c.start};
   Boolean_options options;
   options.rounding = Output_rounding::nearest;
+  options.delaunay_retriangulation = Delaunay;
   for (const auto& [op, m] : c.steps) {
     try {
       auto r = boolean(o.mesh, m, op, Filtered_exact_kernel{}, options);
@@ -129,8 +147,10 @@ void register_all() {
   for (Chain_family f : {Chain_family::drilled_sphere, Chain_family::fused_spheres, Chain_family::slab_and_boxes}) {
     const std::string name = std::string(to_string(f));
     for (auto [subject, fn] : std::initializer_list<std::pair<const char*, void (*)(benchmark::State&, Chain_family)>>{
-             {"relgeo csg", &chain<&run_csg>},
-             {"relgeo nearest", &chain<&run_nearest>},
+             {"relgeo csg", &chain<&run_csg<true>>},
+             {"relgeo csg insertion", &chain<&run_csg<false>>},
+             {"relgeo nearest", &chain<&run_nearest<true>>},
+             {"relgeo nearest insertion", &chain<&run_nearest<false>>},
              {"CGAL Epick", &chain<&run_cgal<CGAL::Epick>>},
              {"CGAL Epeck", &chain<&run_cgal<CGAL::Epeck>>}})
       benchmark::RegisterBenchmark((name + "/" + subject).c_str(), fn, f)->Unit(benchmark::kSecond)->Iterations(1);

@@ -105,10 +105,12 @@ TEST(Csg, BadTreesAreRefusedBeforeAnyBooleanNamingTheNode) {
 }
 
 TEST(Csg, AFailedStepStopsTheTreeAndSaysWhere) {
-  // A repair allowed no round: the torus-sphere union cannot be repaired,
+  // A repair allowed no round: the torus-sphere union of the insertion
+  // order's triangulation (which rounding makes cross) cannot be repaired,
   // and the tree stops at that node with that step's mesh.
   Csg_options o;
   o.boolean.repair.max_rounds = 0;
+  o.boolean.delaunay_retriangulation = false;
   const Csg_node tree = Csg_node::operation(
       Kind::difference,
       {Csg_node::operation(Kind::union_of, {Csg_node::solid(torus(1, 0.3, 24, 12)),

@@ -1,7 +1,8 @@
 # Tests of `relgeo boolean` (included by CMakeLists.txt; uses relgeo_tool_test).
 set(_cube ${_data}/cube.off)
 set(_offset ${_data}/cube_offset.off)
-relgeo_tool_test(help_boolean 0 ARGS help boolean STDOUT_MATCHES "--op" "--oracle" "xor" "self_intersecting_pairs" "--rounding")
+relgeo_tool_test(help_boolean 0 ARGS help boolean STDOUT_MATCHES "--op" "--oracle" "xor" "self_intersecting_pairs" "--rounding"
+  "--retriangulation")
 # Unit cube and the cube moved by (0.5, 0.25, 0.125): the overlap is 0.328125 exactly.
 relgeo_tool_test(boolean_intersection_json 0 STDOUT_JSON
   ARGS boolean ${_cube} ${_offset} --op intersection --format json
@@ -35,15 +36,19 @@ relgeo_tool_test(boolean_bad_op 2 ARGS boolean ${_cube} ${_offset} --op merge)
 relgeo_tool_test(boolean_cgal_kernel 2 ARGS boolean ${_cube} ${_offset} --kernel cgal-epick)
 relgeo_tool_test(boolean_missing_file 2 ARGS boolean ${_cube} ${_data}/no_such_file.off)
 relgeo_tool_test(boolean_bad_rounding 2 ARGS boolean ${_cube} ${_offset} --rounding snap)
+relgeo_tool_test(boolean_bad_retriangulation 2 ARGS boolean ${_cube} ${_offset} --retriangulation cdt
+  STDERR_MATCHES "--retriangulation must be delaunay or insertion")
+relgeo_tool_test(boolean_retriangulation_insertion 0
+  ARGS boolean ${_cube} ${_offset} --op intersection --retriangulation insertion
+  STDOUT_MATCHES "validation +valid solid")
 # The experiment's boolean section: every certified result a solid on the
-# oracle's volume (else exit 1). Rounding to nearest doubles makes the
-# torus-sphere union cross itself; the repair of the rounding (the default)
-# leaves no crossing, and the section lists what it repaired.
+# oracle's volume (else exit 1). Rounding the insertion order's triangulation
+# to nearest doubles made the torus-sphere union cross itself (15 pairs); the
+# constrained Delaunay faces and the repair (the defaults) leave no crossing.
 relgeo_tool_test(experiment_quick_boolean 0
   ARGS experiment --quick --quiet --only boolean --output ${_tmp}/results_boolean
   STDOUT_MATCHES "sphere u sphere +union +filtered +ok" "torus u sphere +union +exact +ok +[0-9]+ +yes +yes +0 +0 "
-                 "whose rounding to doubles was repaired"
-                 "torus u sphere under exact: [1-9][0-9]* defects after nearest rounding; [0-9]+ vertices moved"
+                 "torus u sphere +union +filtered +ok +[0-9]+ +yes +yes +0 "
   FILES ${_tmp}/results_boolean/boolean.json ${_tmp}/results_boolean/boolean/sphere_u_sphere.png
         ${_tmp}/results_boolean/boolean/torus_u_sphere.png)
 

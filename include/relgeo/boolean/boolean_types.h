@@ -68,6 +68,12 @@ struct Boolean_options {
   Output_rounding rounding = Output_rounding::repaired;
   /// Options of the repair (its rounds and the largest change allowed).
   Rounding_repair_options repair{};
+  /// Retriangulate each split face as a constrained Delaunay triangulation
+  /// in its plane (Lawson's flips after the constraints; the flips' validity
+  /// is exact, their choice approximate). False: the triangulation that the
+  /// insertion order gives, with needles that rounding can turn over; kept
+  /// for comparison (doc/boolean.md, "Retriangulation quality").
+  bool delaunay_retriangulation = true;
   /// Validate the output mesh (validate_solid on its doubles, exact
   /// predicates whatever the kernel): Boolean_result::validation. Rounding
   /// to doubles can make an exact result touch or cross itself; the report

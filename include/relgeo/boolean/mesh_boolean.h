@@ -372,6 +372,7 @@ class Boolean_engine {
     }
     curves_.finish(points_.size());
     Face_triangulator<K, Point_table<K>> triangulator(k_, points_);
+    triangulator.set_delaunay(options_.delaunay_retriangulation);
     for (int m = 0; m < 2; ++m) {
       const Mesh& mesh = *mesh_[m];
       pieces_[m].piece_of_face.assign(mesh.faces.size(), invalid_index);

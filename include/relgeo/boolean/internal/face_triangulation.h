@@ -14,20 +14,38 @@
 // that side; interior points split the triangle containing them (in two when
 // on an edge); each constraint is made an edge by flipping the edges that
 // cross it (Sloan, "A fast algorithm for generating constrained Delaunay
-// triangulations", 1993, without the Delaunay part), after being cut at the
-// points lying on it.
+// triangulations", 1993), after being cut at the points lying on it; last,
+// Lawson's flips make the triangulation constrained Delaunay in the face's
+// plane, which removes the needles that the insertion order leaves and that
+// rounding to doubles turns over (doc/boolean.md, "Retriangulation quality").
+//
+// What is certified and what is not. Every topological decision (where a
+// point lies, which edges cross a constraint, whether a quadrilateral is
+// strictly convex so that a flip keeps every triangle positive) is the
+// kernel's exact orientation. Whether a flip improves the angles is a quality
+// decision: it is taken on the points' approximations in doubles, in an
+// orthonormal frame of the face's plane, and only when the in-circle test is
+// clear by a wide margin; a wrong or skipped decision costs an angle, never
+// validity, and a bound on the number of flips makes termination unconditional.
+// The approximations also give each point an enclosing box, which lets the
+// scans skip the orientation tests that the boxes already decide.
 #pragma once
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/core/certified_sort.h"
+#include "relgeo/kernel/implicit_point.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::internal {
@@ -59,7 +77,14 @@ class Face_triangulator {
   using IP = typename K::Implicit_point_3;
 
   Face_triangulator(const K& k, const Points& points)
-      : points_(points), orient2_(k.implicit_orientation_2_object()), compare_(k.compare_xyz_3_object()) {}
+      : points_(points),
+        orient2_(k.implicit_orientation_2_object()),
+        compare_(k.compare_xyz_3_object()),
+        approximate_(k.approximate_point_3_object()) {}
+
+  /// Lawson's flips to a constrained Delaunay triangulation after the
+  /// constraints (on by default; off gives the triangulation of insertion).
+  void set_delaunay(bool on) { delaunay_ = on; }
 
   Face_triangulation run(const Face_constraints& f, int axis) {
     reset(f, axis);
@@ -70,6 +95,7 @@ class Face_triangulator {
       if (!insert_interior_point(local(p))) return fail(out, failure_);
     for (const auto& s : f.segments)
       if (!insert_segment(local(s[0]), local(s[1]))) return fail(out, failure_);
+    if (delaunay_) make_delaunay();
     for (const auto& t : tris_)
       if (t.alive) out.triangles.push_back({global_[t.v[0]], global_[t.v[1]], global_[t.v[2]]});
     return out;
@@ -91,18 +117,66 @@ class Face_triangulator {
 
   void reset(const Face_constraints& f, int axis) {
     axis_ = axis;
-    global_.assign(f.corners.begin(), f.corners.end());
+    global_.clear();
+    local_of_.clear();
+    box_.clear();
+    plane_.clear();
+    blur_.clear();
     tris_.clear();
     constrained_.clear();
+    set_frame(f.corners);
+    for (Index c : f.corners) local(c);
     tris_.push_back({{0, 1, 2}, {-1, -1, -1}, true});
     sigma_ = orient2_(points_[f.corners[0]], points_[f.corners[1]], points_[f.corners[2]], axis_);
   }
 
   int local(Index g) {
-    for (std::size_t i = 0; i < global_.size(); ++i)
-      if (global_[i] == g) return static_cast<int>(i);
-    global_.push_back(g);
-    return static_cast<int>(global_.size() - 1);
+    const auto [it, added] = local_of_.try_emplace(g, static_cast<int>(global_.size()));
+    if (added) {
+      const Approximate_point_3 a = approximate_(points_[g]);
+      global_.push_back(g);
+      box_.push_back(enclosure(a));
+      plane_.push_back(in_frame(a.point));
+      // The approximations of certified kernels are within a few ulps of
+      // their points; 2^-40 of the largest coordinate bounds that with room
+      // (and the rounding of in_frame), the same for every kernel.
+      blur_.push_back(0x1p-40 * unit_ * std::max({std::abs(a.point.x), std::abs(a.point.y), std::abs(a.point.z)}));
+    }
+    return it->second;
+  }
+
+  // ---- enclosing boxes --------------------------------------------------------------
+
+  // A box that contains the exact point whatever the rounding mode: the
+  // approximation's error bound widened by more than the few ulps that
+  // computing the bounds can lose; unbounded when the kernel does not know
+  // its error (naive kernels) or the approximation is not finite.
+  struct Box {
+    std::array<double, 3> lo, hi;
+  };
+  static Box enclosure(const Approximate_point_3& a) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const std::array<double, 3> c{a.point.x, a.point.y, a.point.z};
+    Box b{{-inf, -inf, -inf}, {inf, inf, inf}};
+    if (!std::isfinite(a.error) || !std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) return b;
+    for (int i = 0; i < 3; ++i) {
+      const double pad = (a.error + std::abs(c[i]) * 0x1p-50 + 0x1p-1000) * (1 + 0x1p-40);
+      b.lo[i] = c[i] - pad;
+      b.hi[i] = c[i] + pad;
+    }
+    return b;
+  }
+  // Whether the boxes of the points `a` and of the points `b` are certainly
+  // apart (then no point of one lies on the hull of the other).
+  template <std::size_t N, std::size_t M>
+  bool apart(const std::array<int, N>& a, const std::array<int, M>& b) const {
+    for (int i = 0; i < 3; ++i) {
+      double a_lo = box_[a[0]].lo[i], a_hi = box_[a[0]].hi[i], b_lo = box_[b[0]].lo[i], b_hi = box_[b[0]].hi[i];
+      for (std::size_t j = 1; j < N; ++j) a_lo = std::min(a_lo, box_[a[j]].lo[i]), a_hi = std::max(a_hi, box_[a[j]].hi[i]);
+      for (std::size_t j = 1; j < M; ++j) b_lo = std::min(b_lo, box_[b[j]].lo[i]), b_hi = std::max(b_hi, box_[b[j]].hi[i]);
+      if (a_hi < b_lo || b_hi < a_lo) return true;
+    }
+    return false;
   }
 
   // Orientation in the face's own orientation (positive: counter-clockwise).
@@ -182,13 +256,23 @@ class Face_triangulator {
   bool insert_interior_point(int p) {
     for (std::size_t i = 0; i < tris_.size(); ++i) {
       const Tri& t = tris_[i];
-      if (!t.alive) continue;
-      std::array<Certified_sign, 3> s;
+      if (!t.alive || apart(t.v, std::array<int, 1>{p})) continue;
+      // The edge p is most clearly outside of first: a certified negative
+      // there rejects the triangle before a test that is exactly zero (p on
+      // the line of another edge), which costs exact arithmetic.
+      std::array<int, 3> order{0, 1, 2};
+      std::array<double, 3> approx;
+      for (int k = 0; k < 3; ++k) {
+        const double o = approximate_orientation(t.v[k], t.v[(k + 1) % 3], p);
+        approx[k] = std::isnan(o) ? 0 : o;
+      }
+      std::sort(order.begin(), order.end(), [&](int x, int y) { return approx[x] < approx[y]; });
+      std::array<Certified_sign, 3> s{};
       bool outside = false;
-      for (int k = 0; k < 3 && !outside; ++k) {
+      for (int k : order) {
         s[k] = orient(t.v[k], t.v[(k + 1) % 3], p);
         if (!is_certain(s[k])) return failed("undecided location of a point in a face");
-        outside = s[k] == Certified_sign::negative;
+        if ((outside = s[k] == Certified_sign::negative)) break;
       }
       if (outside) continue;
       const int zeros = (s[0] == Certified_sign::zero) + (s[1] == Certified_sign::zero) + (s[2] == Certified_sign::zero);
@@ -222,14 +306,14 @@ class Face_triangulator {
   bool insert_segment(int a, int b) {
     if (a == b) return true;
     // Points of the face on the segment cut it (collinear and strictly
-    // between). The side of every point is kept: an edge crosses ab only if
-    // its ends lie on opposite sides.
-    side_.assign(global_.size(), Certified_sign::zero);
+    // between); only a point whose box meets the segment's can be one. The
+    // side of a point against ab is computed when first needed and kept: an
+    // edge crosses ab only if its ends lie on opposite sides.
+    side_.assign(global_.size(), Certified_sign::uncertain);
     for (int p = 0; p < static_cast<int>(global_.size()); ++p) {
-      if (p == a || p == b) continue;
-      const Certified_sign o = orient(a, b, p);
+      if (p == a || p == b || apart(std::array<int, 2>{a, b}, std::array<int, 1>{p})) continue;
+      const Certified_sign o = side(a, b, p);
       if (!is_certain(o)) return failed("undecided position of a point against a segment");
-      side_[p] = o;
       if (o != Certified_sign::zero) continue;
       const int between = strictly_between(a, b, p);
       if (between < 0) return failed("undecided order of points on a segment");
@@ -243,7 +327,7 @@ class Face_triangulator {
       if (!t.alive) continue;
       for (int k = 0; k < 3; ++k) {
         const int x = t.v[k], y = t.v[(k + 1) % 3];
-        if (x > y) continue;
+        if (x > y || apart(std::array<int, 2>{a, b}, std::array<int, 2>{x, y})) continue;
         const int c = crosses(a, b, x, y);
         if (c < 0) return false;
         if (c == 0) continue;
@@ -271,8 +355,105 @@ class Face_triangulator {
       if (c == 1) crossing.push_back({std::min(p, q), std::max(p, q)});
     }
     if (!has_edge(a, b)) return failed("no flip makes a constraint segment an edge");
-    constrained_.push_back({std::min(a, b), std::max(a, b)});
+    constrained_.insert(edge_key(a, b));
     return true;
+  }
+
+  // The side of p against ab (kept in side_ for the segment being inserted).
+  Certified_sign side(int a, int b, int p) {
+    if (side_[p] == Certified_sign::uncertain) side_[p] = orient(a, b, p);
+    return side_[p];
+  }
+
+  // ---- constrained Delaunay -------------------------------------------------------
+
+  // Lawson's flips: every interior edge that is not a constraint and whose
+  // opposite vertex lies clearly inside the circumcircle of the triangle on
+  // the other side is flipped (when its quadrilateral is strictly convex,
+  // which the kernel decides), and the four edges around it are looked at
+  // again. The flips are bounded: past the bound the triangulation is kept
+  // as it is (valid, only not Delaunay everywhere). Never fails.
+  void make_delaunay() {
+    if (tris_.size() < 2) return;
+    std::vector<std::array<int, 4>> todo;  // triangle, edge index, its two vertices
+    for (int i = 0; i < static_cast<int>(tris_.size()); ++i)
+      for (int k = 0; k < 3; ++k)
+        if (tris_[i].nb[k] > i) todo.push_back({i, k, tris_[i].v[k], tris_[i].v[(k + 1) % 3]});
+    const std::size_t limit = 16 * tris_.size() * tris_.size() + 64;
+    for (std::size_t flips = 0; !todo.empty() && flips < limit;) {
+      const auto [ti, k, x, y] = todo.back();
+      todo.pop_back();
+      const Tri& t = tris_[ti];
+      if (t.v[k] != x || t.v[(k + 1) % 3] != y) continue;  // flipped away since: its successors are queued
+      const int tj = t.nb[k];
+      if (tj < 0 || is_constrained(x, y)) continue;
+      const int p = t.v[(k + 2) % 3];
+      const int q = tris_[tj].v[(edge_index(tris_[tj], y, x) + 2) % 3];
+      if (!clearly_in_circle(x, y, p, q)) continue;
+      // Not strictly convex, or undecided (a kernel that can be uncertain):
+      // no flip; the triangulation stays valid as it is.
+      if (flip_if_convex(ti, k) != 1) continue;
+      ++flips;
+      // ti is now (p, x, q), tj (q, y, p): their outer edges are 0 and 1.
+      for (const int u : {ti, tj})
+        for (int e = 0; e < 2; ++e) todo.push_back({u, e, tris_[u].v[e], tris_[u].v[e + 1]});
+    }
+  }
+
+  // ---- the face's frame (quality decisions and test order only) ----------------
+
+  // An orthonormal frame (e1, e2) of the face's plane from its corners'
+  // approximations, oriented like the face (e1 x e2 along its normal), its
+  // lengths scaled by a power of two that makes the face's size about 1 (so
+  // the in-circle determinant neither underflows nor overflows, and operands
+  // scaled by a power of two get the same decisions).
+  void set_frame(const std::array<Index, 3>& corners) {
+    std::array<Point_3<double>, 3> c;
+    for (int i = 0; i < 3; ++i) c[i] = approximate_(points_[corners[i]]).point;
+    std::array<double, 3> u{c[1].x - c[0].x, c[1].y - c[0].y, c[1].z - c[0].z};
+    std::array<double, 3> w{c[2].x - c[0].x, c[2].y - c[0].y, c[2].z - c[0].z};
+    int exponent = 0;
+    std::frexp(std::max({std::abs(u[0]), std::abs(u[1]), std::abs(u[2]), std::abs(w[0]), std::abs(w[1]), std::abs(w[2])}),
+               &exponent);
+    unit_ = std::ldexp(1.0, -exponent);
+    if (!std::isfinite(unit_) || unit_ == 0) unit_ = 1;
+    for (int i = 0; i < 3; ++i) u[i] *= unit_, w[i] *= unit_;  // exact: a power of two
+    const std::array<double, 3> n{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const std::array<double, 3> v{n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]};
+    const double lu = std::hypot(u[0], u[1], u[2]), lv = std::hypot(v[0], v[1], v[2]);
+    origin_ = c[0];
+    for (int i = 0; i < 3; ++i) e1_[i] = u[i] / lu, e2_[i] = v[i] / lv;  // NaN for a degenerate face: no decision
+  }
+  std::array<double, 2> in_frame(const Point_3<double>& p) const {
+    const double d[3] = {p.x - origin_.x, p.y - origin_.y, p.z - origin_.z};
+    return {unit_ * (d[0] * e1_[0] + d[1] * e1_[1] + d[2] * e1_[2]),
+            unit_ * (d[0] * e2_[0] + d[1] * e2_[1] + d[2] * e2_[2])};
+  }
+  // The orientation of a, b, c in the frame, in doubles (for ordering tests).
+  double approximate_orientation(int a, int b, int c) const {
+    return (plane_[b][0] - plane_[a][0]) * (plane_[c][1] - plane_[a][1]) -
+           (plane_[b][1] - plane_[a][1]) * (plane_[c][0] - plane_[a][0]);
+  }
+
+  // Whether q lies inside the circle through x, y, p (counter-clockwise in
+  // the face's orientation) by a margin far above the error of the
+  // approximations; false when in doubt or not finite. Two margins: relative
+  // to the determinant's permanent (rounding), and against the points' blur
+  // (moving a point by b changes the determinant by at most about 8 b L^3,
+  // L the largest distance from q): points closer together than their
+  // approximations can resolve give no decision, whatever the kernel.
+  bool clearly_in_circle(int x, int y, int p, int q) const {
+    const auto& d = plane_[q];
+    const double ax = plane_[x][0] - d[0], ay = plane_[x][1] - d[1];
+    const double bx = plane_[y][0] - d[0], by = plane_[y][1] - d[1];
+    const double cx = plane_[p][0] - d[0], cy = plane_[p][1] - d[1];
+    const double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    const double det = a2 * (bx * cy - cx * by) + b2 * (cx * ay - ax * cy) + c2 * (ax * by - bx * ay);
+    const double scale = a2 * (std::abs(bx * cy) + std::abs(cx * by)) + b2 * (std::abs(cx * ay) + std::abs(ax * cy)) +
+                         c2 * (std::abs(ax * by) + std::abs(bx * ay));
+    const double blur = std::max({blur_[x], blur_[y], blur_[p], blur_[q]});
+    const double reach = std::sqrt(std::max({a2, b2, c2}));
+    return det > 0x1p-30 * scale && det > 64 * blur * reach * reach * reach;  // NaN compares false
   }
 
   // The triangle and its edge index holding edge {x, y} (either direction).
@@ -300,16 +481,24 @@ class Face_triangulator {
   }
 
   // 1 if segment xy crosses segment ab in both interiors, 0 if not, -1
-  // undecided; the sides of x and y against ab are side_'s.
+  // undecided.
   int crosses(int a, int b, int x, int y) {
     if (x == a || x == b || y == a || y == b) return 0;
-    if (side_[x] * side_[y] != Certified_sign::negative) return 0;
-    const Certified_sign sa = orient(x, y, a), sb = orient(x, y, b);
+    // a and b against the line xy first: a point x on the line ab but off
+    // the segment (an exact zero, which costs exact arithmetic) has a and b
+    // on one side of xy, so the pair is rejected before its side is asked.
+    const Certified_sign sa = orient(x, y, a), sb = is_certain(sa) ? orient(x, y, b) : sa;
     if (!is_certain(sa) || !is_certain(sb)) {
       failed("undecided crossing of a constraint");
       return -1;
     }
-    return sa * sb == Certified_sign::negative ? 1 : 0;
+    if (sa * sb != Certified_sign::negative) return 0;
+    const Certified_sign sx = side(a, b, x), sy = is_certain(sx) ? side(a, b, y) : sx;
+    if (!is_certain(sx) || !is_certain(sy)) {
+      failed("undecided position of a point against a segment");
+      return -1;
+    }
+    return sx * sy == Certified_sign::negative ? 1 : 0;
   }
 
   // Flips the edge k of triangle ti when its quadrilateral is strictly convex:
@@ -346,10 +535,10 @@ class Face_triangulator {
           if ((t.v[k] == a && t.v[(k + 1) % 3] == b) || (t.v[k] == b && t.v[(k + 1) % 3] == a)) return true;
     return false;
   }
-  bool is_constrained(int x, int y) const {
-    const std::array<int, 2> e{std::min(x, y), std::max(x, y)};
-    return std::find(constrained_.begin(), constrained_.end(), e) != constrained_.end();
+  static std::uint64_t edge_key(int x, int y) {
+    return (std::uint64_t(std::uint32_t(std::min(x, y))) << 32) | std::uint32_t(std::max(x, y));
   }
+  bool is_constrained(int x, int y) const { return constrained_.count(edge_key(x, y)) != 0; }
 
   // ---- bookkeeping --------------------------------------------------------------
 
@@ -379,12 +568,21 @@ class Face_triangulator {
   const Points& points_;
   typename K::Implicit_orientation_2 orient2_;
   typename K::Compare_xyz_3 compare_;
+  decltype(std::declval<const K&>().approximate_point_3_object()) approximate_;
+  bool delaunay_ = true;
   int axis_ = 2;
   Certified_sign sigma_ = Certified_sign::zero;
-  std::vector<Index> global_;
-  std::vector<Certified_sign> side_;  // of each point against the segment being inserted
+  std::vector<Index> global_;                  // local -> the Boolean's index
+  std::unordered_map<Index, int> local_of_;    // the Boolean's index -> local
+  std::vector<Box> box_;                       // of each local point
+  std::vector<std::array<double, 2>> plane_;   // of each local point, in the face's frame
+  std::vector<double> blur_;                   // of each local point: how far its approximation may be off, in the frame
+  Point_3<double> origin_;
+  std::array<double, 3> e1_{}, e2_{};
+  double unit_ = 1;                            // the frame's length scale (a power of two)
+  std::vector<Certified_sign> side_;           // against the segment being inserted (uncertain: not computed)
   std::vector<Tri> tris_;
-  std::vector<std::array<int, 2>> constrained_;
+  std::unordered_set<std::uint64_t> constrained_;
   std::string failure_;
 };
 

@@ -23,7 +23,9 @@ int run_boolean_command(const Boolean_command_options& o, Streams io) {
   const Mesh_double a = read_mesh(o.a), b = read_mesh(o.b);
   const Boolean_run run = evaluate_boolean(o.kernel, a, b, op,
                                            Boolean_options{.check_self_intersections = !o.skip_self_intersection_check,
-                                                           .rounding = parse_output_rounding(o.rounding)});
+                                                           .rounding = parse_output_rounding(o.rounding),
+                                                           .delaunay_retriangulation =
+                                                               parse_delaunay_retriangulation(o.retriangulation)});
   std::optional<Oracle_comparison> oracle;
   if (o.oracle == "cgal") oracle = compare_with_cgal(a, b, op, run.output);
   if (!o.output.empty()) write_mesh(o.output, run.output);

@@ -24,6 +24,7 @@ struct Boolean_command_options {
   std::string oracle;             ///< "cgal": compare with CGAL's corefinement (Epeck)
   bool skip_self_intersection_check = false;
   std::string rounding = "repaired";  ///< repaired | nearest (Boolean_options::rounding)
+  std::string retriangulation = "delaunay";  ///< delaunay | insertion (Boolean_options::delaunay_retriangulation)
   unsigned levels = 0;            ///< >= 1: the Boolean of two Loop subdivision solids at this level
   bool fit = false;               ///< with --levels: fit the control points near the curves
   Format format = Format::text;

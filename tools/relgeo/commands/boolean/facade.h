@@ -28,6 +28,10 @@ Boolean_operation parse_boolean_operation(const std::string& name);
 Output_rounding parse_output_rounding(const std::string& name);
 /// --rounding repaired|nearest (boolean and csg).  [options.cpp]
 void add_rounding_option(CLI::App& cmd, std::string& rounding);
+/// delaunay -> true, insertion -> false. \throws Usage_error otherwise.  [options.cpp]
+bool parse_delaunay_retriangulation(const std::string& name);
+/// --retriangulation delaunay|insertion (boolean and csg).  [options.cpp]
+void add_retriangulation_option(CLI::App& cmd, std::string& retriangulation);
 
 /// One Boolean under one kernel.
 struct Boolean_run {

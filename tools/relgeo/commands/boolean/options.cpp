@@ -71,6 +71,19 @@ void add_rounding_option(CLI::App& cmd, std::string& rounding) {
       ->default_str("repaired");
 }
 
+bool parse_delaunay_retriangulation(const std::string& name) {
+  if (name == "delaunay") return true;
+  if (name == "insertion") return false;
+  throw Usage_error("--retriangulation must be delaunay or insertion (got '" + name + "')");
+}
+
+void add_retriangulation_option(CLI::App& cmd, std::string& retriangulation) {
+  cmd.add_option("--retriangulation", retriangulation,
+                 "delaunay: each split face a constrained Delaunay triangulation (default); insertion: the "
+                 "triangulation of the insertion order (needles; for comparison)")
+      ->default_str("delaunay");
+}
+
 Boolean_operation parse_boolean_operation(const std::string& name) {
   for (Boolean_operation op : {Boolean_operation::union_of, Boolean_operation::intersection, Boolean_operation::difference,
                                Boolean_operation::symmetric_difference})
@@ -91,6 +104,7 @@ void declare_boolean_options(CLI::App& cmd, Boolean_command_options& o) {
   cmd.add_flag("--skip-self-intersection-check", o.skip_self_intersection_check,
                "do not test the operands for self-intersections (the other checks still run)");
   add_rounding_option(cmd, o.rounding);
+  add_retriangulation_option(cmd, o.retriangulation);
   cmd.add_option("--levels", o.levels, "K >= 1: the Boolean of two Loop subdivision solids at level K")->type_name("K");
   cmd.add_option("--tags-a", o.tags_a, "with --levels: crease/corner tag file of A")->type_name("FILE");
   cmd.add_option("--tags-b", o.tags_b, "with --levels: crease/corner tag file of B")->type_name("FILE");

@@ -106,6 +106,7 @@ int run_csg_command(const Csg_command_options& o, Streams io) {
   internal::Stopwatch clock;
   Csg_options options;
   options.boolean.rounding = parse_output_rounding(o.rounding);
+  options.boolean.delaunay_retriangulation = parse_delaunay_retriangulation(o.retriangulation);
   options.boolean.check_self_intersections = !o.skip_self_intersection_check;
   const Csg_node tree = parse_csg_tree(o.tree);
   const Csg_result r = evaluate_csg(o.kernel, tree, options);

@@ -19,6 +19,7 @@ struct Csg_command_options {
   std::string output;             ///< the root's solid (format from the extension), empty for none
   std::string report;             ///< JSON report file, empty for none
   std::string rounding = "repaired";
+  std::string retriangulation = "delaunay";
   bool skip_self_intersection_check = false;
   Format format = Format::text;
 };

@@ -34,6 +34,7 @@ void declare_csg_options(CLI::App& cmd, Csg_command_options& o) {
   add_output_option(cmd, o.output, "output", "write the root's solid (format from the extension)");
   add_output_option(cmd, o.report, "report", "write the JSON report");
   add_rounding_option(cmd, o.rounding);
+  add_retriangulation_option(cmd, o.retriangulation);
   cmd.add_flag("--skip-self-intersection-check", o.skip_self_intersection_check,
                "do not test the leaves for self-intersections (the other checks still run)");
   add_format_option(cmd, o.format);

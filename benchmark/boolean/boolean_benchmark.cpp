@@ -103,14 +103,23 @@ const std::pair<Mesh, Mesh>& operands(const std::string& name) {
 
 namespace {
 
+// `before_issue_28`: the insertion order's triangulation and nearest
+// rounding (what the Boolean did before its output was made valid in
+// doubles), to measure what the Delaunay faces and the repair cost.
 template <class K>
-Timed_run relgeo_run(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op, bool checks, int threads = 1) {
-  return [&a, &b, op, checks, threads]() -> Inspect {
+Timed_run relgeo_run(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op, bool checks, int threads = 1,
+                     bool before_issue_28 = false) {
+  return [&a, &b, op, checks, threads, before_issue_28]() -> Inspect {
     // The output's validation report is off: CGAL's corefinement has none
     // (its cost is Boolean_timing::validation, reported by `relgeo boolean`).
     auto r = std::make_shared<relgeo::Boolean_result<K>>(relgeo::boolean(
         a, b, op, K{},
-        {.check_operands = checks, .check_self_intersections = checks, .validate_output = false, .threads = threads}));
+        {.check_operands = checks,
+         .check_self_intersections = checks,
+         .rounding = before_issue_28 ? relgeo::Output_rounding::nearest : relgeo::Output_rounding::repaired,
+         .delaunay_retriangulation = !before_issue_28,
+         .validate_output = false,
+         .threads = threads}));
     return [r] { return Run_outcome{r->mesh.faces.size(), r->ok() && closed_oriented_manifold(r->mesh), volume(r->mesh)}; };
   };
 }
@@ -123,6 +132,9 @@ std::vector<Subject> subjects() {
       {"relgeo filtered, no operand check", [](const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
          return relgeo_run<relgeo::Filtered_exact_kernel>(a, b, op, false);
        }, false, "CGAL::corefine Epick"},
+      {"relgeo filtered, insertion + nearest", [](const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
+         return relgeo_run<relgeo::Filtered_exact_kernel>(a, b, op, true, 1, true);
+       }, false, "relgeo filtered"},
 #if defined(RELGEO_HAS_TBB) && RELGEO_HAS_TBB
       // The operand checks and the broad phase on 2 threads (TBB); the rest
       // of the Boolean is serial.

@@ -140,6 +140,7 @@ struct Boolean_counts {
   std::size_t new_vertices = 0;        ///< intersection points that are not input vertices
   std::size_t split_faces = 0;         ///< input faces retriangulated
   std::size_t patches = 0;             ///< pieces labelled by one decision each
+  std::size_t checked_operands = 0;    ///< operands checked first (0: check_operands off, or Valid_solid operands)
 };
 
 /// The result of relgeo::boolean under kernel K.

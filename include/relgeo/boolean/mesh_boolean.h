@@ -86,6 +86,7 @@ class Boolean_engine {
     if (options_.check_operands) {
       check_operand(0, "A");
       check_operand(1, "B");
+      r.counts.checked_operands = 2;
     }
     r.time.check = clock.lap();
     number_points();

@@ -1,0 +1,69 @@
+// relgeo/boolean/valid_solid.h — a mesh that carries its certificate: a
+// closed, consistently oriented 2-manifold without degenerate faces, finite
+// coordinates or self-intersections, decided by relgeo's exact tests. A
+// Boolean of two Valid_solids skips the operand checks (a third to a half of
+// a Boolean's time): a result that relgeo produced and validated, or a mesh
+// checked once, is not checked again when it is used again (issue 28).
+//
+//   relgeo::Valid_solid part(relgeo::read_mesh("part.off"));    // checked here, once
+//   for (const relgeo::Mesh_double& hole : holes) {
+//     const auto r = relgeo::boolean(part, relgeo::Valid_solid(hole), relgeo::Boolean_operation::difference);
+//     part = relgeo::Valid_solid::of(r).value();                // certified by r's validation
+//   }
+//
+// The certificate is only made by those two checks, and the mesh cannot be
+// changed afterwards (it is held const and shared: copies are cheap).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <utility>
+
+#include "relgeo/boolean/boolean_types.h"
+#include "relgeo/boolean/mesh_boolean.h"
+#include "relgeo/mesh/self_intersection.h"
+#include "relgeo/mesh/triangle_mesh.h"
+
+namespace relgeo {
+
+class Valid_solid {
+ public:
+  /// Checks m as the Boolean checks an operand (check_solid, exact).
+  /// \throws Invalid_operand (operand "solid") naming every defect.
+  explicit Valid_solid(Mesh_double m) {
+    Mesh_report report = check_solid(m);
+    if (!report.is_valid()) throw Invalid_operand("solid", std::move(report.issues));
+    mesh_ = std::make_shared<const Mesh_double>(std::move(m));
+  }
+
+  /// The output of a Boolean as a certified solid when the Boolean succeeded
+  /// and its validation ran and found a valid solid (validate_solid: exact
+  /// tests on the output's doubles, under every kernel); nothing otherwise.
+  template <class K>
+  static std::optional<Valid_solid> of(const Boolean_result<K>& r) {
+    if (!r.ok() || r.validation.kernel.empty() || !r.validation.is_valid_solid()) return std::nullopt;
+    Mesh_double m;
+    m.vertices = r.mesh.vertices;
+    m.faces = r.mesh.faces;
+    return Valid_solid(std::move(m), Certified{});
+  }
+
+  const Mesh_double& mesh() const { return *mesh_; }
+
+ private:
+  struct Certified {};
+  Valid_solid(Mesh_double m, Certified) : mesh_(std::make_shared<const Mesh_double>(std::move(m))) {}
+
+  std::shared_ptr<const Mesh_double> mesh_;
+};
+
+/// relgeo::boolean of two certified solids: the same result as on their
+/// meshes, without the operand checks (options.check_operands is ignored).
+template <class K = Filtered_exact_kernel>
+Boolean_result<K> boolean(const Valid_solid& a, const Valid_solid& b, Boolean_operation op, const K& k = K{},
+                          Boolean_options options = {}) {
+  options.check_operands = false;
+  return boolean(a.mesh(), b.mesh(), op, k, options);
+}
+
+}  // namespace relgeo

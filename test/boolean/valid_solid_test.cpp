@@ -1,0 +1,94 @@
+// Valid_solid: a certificate that travels with a mesh, so that a Boolean of
+// certified solids does not check its operands again (issue 28, item 3).
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "boolean_chains.h"
+#include "relgeo/boolean.h"
+#include "relgeo/mesh/shapes.h"
+
+namespace relgeo::test {
+namespace {
+
+using Op = Boolean_operation;
+
+bool names(const Invalid_mesh& e, Mesh_defect d) {
+  for (const Mesh_issue& i : e.issues())
+    if (i.defect == d) return true;
+  return false;
+}
+
+TEST(ValidSolid, CheckingAMeshCertifiesItOrNamesTheDefects) {
+  const Valid_solid cube_solid(cube(0, 0, 0, 1));
+  EXPECT_EQ(cube_solid.mesh().faces.size(), 12u);
+
+  Mesh_double open = cube(0, 0, 0, 1);
+  open.faces.pop_back();
+  try {
+    (void)Valid_solid(open);
+    FAIL() << "an open mesh was certified";
+  } catch (const Invalid_operand& e) {
+    EXPECT_EQ(e.operand(), "solid");
+    EXPECT_TRUE(names(e, Mesh_defect::boundary_edge)) << e.what();
+  }
+  Mesh_double not_finite = cube(0, 0, 0, 1);
+  not_finite.vertices[0].x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW((void)Valid_solid(not_finite), Invalid_operand);
+  // Two overlapping cubes in one mesh: closed and manifold, but crossing itself.
+  Mesh_double crossing = cube(0, 0, 0, 1);
+  const Mesh_double other = cube(0.5, 0.5, 0.5, 1);
+  const Index n = static_cast<Index>(crossing.vertices.size());
+  crossing.vertices.insert(crossing.vertices.end(), other.vertices.begin(), other.vertices.end());
+  for (Triangle t : other.faces) crossing.faces.push_back({t[0] + n, t[1] + n, t[2] + n});
+  try {
+    (void)Valid_solid(crossing);
+    FAIL() << "a self-intersecting mesh was certified";
+  } catch (const Invalid_operand& e) {
+    EXPECT_TRUE(names(e, Mesh_defect::self_intersection)) << e.what();
+  }
+}
+
+TEST(ValidSolid, AValidatedResultIsCertifiedAndNotCheckedAgain) {
+  // The fused-spheres chain through Valid_solid: every step's operands are
+  // certified (the first by checking, the others by the last validation),
+  // none is checked again, and each result is the one of the plain Boolean.
+  const Boolean_chain c = make_chain(Chain_family::fused_spheres, 6);
+  Valid_solid current(c.start);
+  Mesh_double plain = c.start;
+  for (const auto& [op, operand] : c.steps) {
+    const auto r = boolean(current, Valid_solid(operand), op);
+    ASSERT_TRUE(r.ok()) << r.failure;
+    EXPECT_EQ(r.counts.checked_operands, 0u);
+    const auto p = boolean(plain, operand, op);
+    EXPECT_EQ(p.counts.checked_operands, 2u);
+    EXPECT_EQ(r.mesh.faces, p.mesh.faces);
+    EXPECT_EQ(r.mesh.vertices, p.mesh.vertices);
+    const std::optional<Valid_solid> next = Valid_solid::of(r);
+    ASSERT_TRUE(next.has_value()) << r.validation.summary();
+    current = *next;
+    plain = operand_of(p.mesh);
+  }
+}
+
+TEST(ValidSolid, NoCertificateWithoutAPassedValidation) {
+  const Mesh_double a = torus(1, 0.3, 24, 12), b = rigidly_moved(icosphere(2), 0.3, 0.2, {0, 0, 0.05});
+  // Nearest rounding of the insertion order's triangulation crosses itself.
+  Boolean_options broken;
+  broken.rounding = Output_rounding::nearest;
+  broken.delaunay_retriangulation = false;
+  const auto crossing = boolean(a, b, Op::union_of, Filtered_exact_kernel{}, broken);
+  ASSERT_TRUE(crossing.ok());
+  ASSERT_FALSE(crossing.validation.is_valid_solid());
+  EXPECT_FALSE(Valid_solid::of(crossing).has_value());
+  // Not validated: nothing certifies it.
+  Boolean_options unvalidated;
+  unvalidated.validate_output = false;
+  EXPECT_FALSE(Valid_solid::of(boolean(a, b, Op::union_of, Filtered_exact_kernel{}, unvalidated)).has_value());
+  // A symmetric difference touches itself along its curves: not a solid.
+  EXPECT_FALSE(Valid_solid::of(boolean(a, b, Op::symmetric_difference)).has_value());
+  EXPECT_TRUE(Valid_solid::of(boolean(a, b, Op::union_of)).has_value());
+}
+
+}  // namespace
+}  // namespace relgeo::test

@@ -15,6 +15,10 @@
 // with an angle under one degree, and whether the final mesh is a valid
 // solid (relgeo's exact validation, outside the timing).
 // Usage: relgeo_chain_benchmark [--levels=N] [google-benchmark flags].
+// --export_chains=DIR writes each chain's operands as DIR/FAMILY.json
+// ({"start": MESH, "steps": [{"op", "mesh": MESH}]}, MESH = {"v": [x, y, z,
+// ...], "f": [i, j, k, ...]}) and exits: the input of manifold_chains.mjs,
+// which runs the same chains with Manifold's WebAssembly build.
 #include <benchmark/benchmark.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -25,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <string>
 
 #include "boolean/boolean_chains.h"
@@ -157,11 +162,46 @@ void register_all() {
   }
 }
 
+void write_mesh_json(std::ofstream& out, const Mesh_double& m) {
+  out << "{\"v\":[";
+  for (std::size_t i = 0; i < m.vertices.size(); ++i)
+    out << (i ? "," : "") << m.vertices[i].x << ',' << m.vertices[i].y << ',' << m.vertices[i].z;
+  out << "],\"f\":[";
+  for (std::size_t i = 0; i < m.faces.size(); ++i)
+    out << (i ? "," : "") << m.faces[i][0] << ',' << m.faces[i][1] << ',' << m.faces[i][2];
+  out << "]}";
+}
+
+int export_chains(const std::string& dir) {
+  for (Chain_family f : {Chain_family::drilled_sphere, Chain_family::fused_spheres, Chain_family::slab_and_boxes}) {
+    const Boolean_chain c = relgeo::test::make_chain(f, 24, 7, sphere_levels);
+    const std::string path = dir + "/" + std::string(to_string(f)) + ".json";
+    std::ofstream out(path);
+    out.precision(17);
+    out << "{\"start\":";
+    write_mesh_json(out, c.start);
+    out << ",\"steps\":[";
+    for (std::size_t i = 0; i < c.steps.size(); ++i) {
+      out << (i ? "," : "") << "{\"op\":\"" << to_string(c.steps[i].first) << "\",\"mesh\":";
+      write_mesh_json(out, c.steps[i].second);
+      out << "}";
+    }
+    out << "]}\n";
+    if (!out) {
+      std::fprintf(stderr, "cannot write %s\n", path.c_str());
+      return 1;
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::strncmp(argv[i], "--levels=", 9) == 0) sphere_levels = std::atoi(argv[i] + 9);
+  for (int i = 1; i < argc; ++i)
+    if (std::strncmp(argv[i], "--export_chains=", 16) == 0) return export_chains(argv[i] + 16);
   benchmark::Initialize(&argc, argv);
   register_all();
   benchmark::RunSpecifiedBenchmarks();

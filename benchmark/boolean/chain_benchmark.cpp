@@ -82,16 +82,9 @@ void report(benchmark::State& state, const Chain_outcome& o) {
 
 template <bool Delaunay>
 Chain_outcome run_csg(const Boolean_chain& c) {
-  Csg_node tree = Csg_node::solid(c.start);
-  for (const auto& [op, m] : c.steps) {
-    const auto kind = op == Boolean_operation::union_of       ? Csg_node::Kind::union_of
-                      : op == Boolean_operation::intersection ? Csg_node::Kind::intersection
-                                                              : Csg_node::Kind::difference;
-    tree = Csg_node::operation(kind, {std::move(tree), Csg_node::solid(m)});
-  }
   Csg_options options;
   options.boolean.delaunay_retriangulation = Delaunay;
-  const Csg_result r = csg(tree, Filtered_exact_kernel{}, options);
+  const Csg_result r = csg(relgeo::test::csg_tree(c), Filtered_exact_kernel{}, options);
   return {static_cast<int>(std::count_if(r.steps.begin(), r.steps.end(), [](const Csg_step& s) { return s.ok; })),
           r.mesh};
 }

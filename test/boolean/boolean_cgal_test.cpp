@@ -134,13 +134,8 @@ TEST(BooleanCgalOracle, TheChainsEndOnTheVolumeOfCgalsExactChain) {
   for (const Chain_family family : {Chain_family::drilled_sphere, Chain_family::fused_spheres, Chain_family::slab_and_boxes}) {
     const std::string name(to_string(family));
     const Boolean_chain c = make_chain(family, 24);
-    Csg_node tree = Csg_node::solid(c.start);
     Surface exact = to_surface(c.start);
     for (const auto& [op, m] : c.steps) {
-      const auto kind = op == Op::union_of       ? Csg_node::Kind::union_of
-                        : op == Op::intersection ? Csg_node::Kind::intersection
-                                                 : Csg_node::Kind::difference;
-      tree = Csg_node::operation(kind, {std::move(tree), Csg_node::solid(m)});
       Surface operand = to_surface(m), out;
       const bool ok = op == Op::union_of       ? PMP::corefine_and_compute_union(exact, operand, out)
                       : op == Op::intersection ? PMP::corefine_and_compute_intersection(exact, operand, out)
@@ -148,7 +143,7 @@ TEST(BooleanCgalOracle, TheChainsEndOnTheVolumeOfCgalsExactChain) {
       ASSERT_TRUE(ok) << name;
       exact = std::move(out);
     }
-    const Csg_result r = csg(tree);
+    const Csg_result r = csg(csg_tree(c));
     ASSERT_TRUE(r.ok()) << name << ": " << r.failure;
     const double cgal_volume = CGAL::to_double(PMP::volume(exact));
     EXPECT_NEAR(volume(r.mesh), cgal_volume, 1e-12 * std::abs(cgal_volume)) << name;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "relgeo/boolean/boolean_types.h"
+#include "relgeo/boolean/csg.h"
 #include "relgeo/mesh/shapes.h"
 
 namespace relgeo::test {
@@ -65,6 +66,19 @@ inline Boolean_chain make_chain(Chain_family family, int steps, unsigned seed = 
     }
   }
   return c;
+}
+
+/// The chain as one CSG tree, the steps nested in their order:
+/// ((start op1 m1) op2 m2) ...
+inline Csg_node csg_tree(const Boolean_chain& c) {
+  Csg_node tree = Csg_node::solid(c.start);
+  for (const auto& [op, m] : c.steps) {
+    const auto kind = op == Boolean_operation::union_of       ? Csg_node::Kind::union_of
+                      : op == Boolean_operation::intersection ? Csg_node::Kind::intersection
+                                                              : Csg_node::Kind::difference;
+    tree = Csg_node::operation(kind, {std::move(tree), Csg_node::solid(m)});
+  }
+  return tree;
 }
 
 /// The mesh a result hands on as the next operand: its vertices and faces

@@ -90,5 +90,23 @@ TEST(ValidSolid, NoCertificateWithoutAPassedValidation) {
   EXPECT_TRUE(Valid_solid::of(boolean(a, b, Op::union_of)).has_value());
 }
 
+TEST(ValidSolid, TheEmptySolidIsAnOperandLikeAnyOther) {
+  // As the Boolean accepts it: A union nothing is A. An empty result (cubes
+  // apart, intersected) is certified as the empty solid and goes on.
+  const Valid_solid nothing{Mesh_double{}};
+  const auto r = boolean(Valid_solid(cube(0, 0, 0, 1)), nothing, Op::union_of);
+  ASSERT_TRUE(r.ok()) << r.failure;
+  EXPECT_EQ(r.mesh.faces.size(), 12u);
+  const auto apart = boolean(Valid_solid(cube(0, 0, 0, 1)), Valid_solid(cube(3, 0, 0, 1)), Op::intersection);
+  ASSERT_TRUE(apart.ok()) << apart.failure;
+  ASSERT_TRUE(apart.mesh.faces.empty());
+  const std::optional<Valid_solid> empty = Valid_solid::of(apart);
+  ASSERT_TRUE(empty.has_value());
+  const auto again = boolean(*empty, Valid_solid(cube(0, 0, 0, 1)), Op::union_of);
+  ASSERT_TRUE(again.ok()) << again.failure;
+  EXPECT_TRUE(again.validation.is_valid_solid()) << again.validation.summary();
+  EXPECT_EQ(again.mesh.faces.size(), 12u);
+}
+
 }  // namespace
 }  // namespace relgeo::test

@@ -28,7 +28,9 @@ namespace relgeo {
 
 class Valid_solid {
  public:
-  /// Checks m as the Boolean checks an operand (check_solid, exact).
+  /// Checks m as the Boolean checks an operand (check_solid, exact). The
+  /// empty mesh passes: it bounds the empty solid, an operand the Boolean
+  /// accepts (A union nothing is A).
   /// \throws Invalid_operand (operand "solid") naming every defect.
   explicit Valid_solid(Mesh_double m) {
     Mesh_report report = check_solid(m);
@@ -38,10 +40,13 @@ class Valid_solid {
 
   /// The output of a Boolean as a certified solid when the Boolean succeeded
   /// and its validation ran and found a valid solid (validate_solid: exact
-  /// tests on the output's doubles, under every kernel); nothing otherwise.
+  /// tests on the output's doubles, under every kernel), or the output is
+  /// empty (the exact result is the empty solid: operands apart, say, which
+  /// the validation does not count as a solid); nothing otherwise.
   template <class K>
   static std::optional<Valid_solid> of(const Boolean_result<K>& r) {
-    if (!r.ok() || r.validation.kernel.empty() || !r.validation.is_valid_solid()) return std::nullopt;
+    if (!r.ok() || r.validation.kernel.empty()) return std::nullopt;
+    if (!r.mesh.faces.empty() && !r.validation.is_valid_solid()) return std::nullopt;
     Mesh_double m;
     m.vertices = r.mesh.vertices;
     m.faces = r.mesh.faces;

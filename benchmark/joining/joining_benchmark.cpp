@@ -75,8 +75,8 @@ void bench(benchmark::State& state, Method method, bool sigma_series) {
   Join_report r;
   for (auto _ : state) {
     switch (method) {
-      case Method::whitney: r = join_meshes(c.model, c.meshes, o).report; break;
-      case Method::naive: r = naive_sewing(c.model, c.meshes, o).report; break;
+      case Method::whitney: r = join_meshes(c.model, c.meshes, Filtered_exact_kernel{}, o).report; break;
+      case Method::naive: r = naive_sewing(c.model, c.meshes, Filtered_exact_kernel{}, o).report; break;
       case Method::occt:
 #ifdef RELGEO_HAS_OCCT
         r = occt_sewing(c.model, c.meshes).report;

@@ -24,13 +24,13 @@ TEST(Agreement, NaiveDoubleIsBitForBitCgalSimpleCartesian) {
   const Naive_kernel<double> naive;
   std::size_t differ = 0;
   for (const auto& c : d.orientation_2.cases) {
-    const auto ours = analysis::orientation_2_of(naive, c);
+    const auto ours = analysis::orientation_2_of(c, naive);
     const auto cgal = CGAL::orientation(SC::Point_2(c.px, c.py), SC::Point_2(c.qx, c.qy), SC::Point_2(c.rx, c.ry));
     differ += static_cast<int>(ours) != static_cast<int>(cgal);
   }
   for (const auto& c : d.orientation_3.cases) {
     const auto& v = c.c;
-    const auto ours = analysis::orientation_3_of(naive, c);
+    const auto ours = analysis::orientation_3_of(c, naive);
     const auto cgal = CGAL::orientation(SC::Point_3(v[0], v[1], v[2]), SC::Point_3(v[3], v[4], v[5]),
                                         SC::Point_3(v[6], v[7], v[8]), SC::Point_3(v[9], v[10], v[11]));
     differ += static_cast<int>(ours) != static_cast<int>(cgal);
@@ -48,7 +48,7 @@ TEST(Agreement, Mpfr53IsNaiveDoubleAwayFromUnderflowAndOverflow) {
     if (d.orientation_2.family[f] == "extreme-magnitudes") continue;
     for (std::size_t i = d.orientation_2.begin[f]; i < d.orientation_2.begin[f + 1]; i += 7) {
       const auto& c = d.orientation_2.cases[i];
-      differ += analysis::orientation_2_of(naive, c) != analysis::orientation_2_of(mpfr, c);
+      differ += analysis::orientation_2_of(c, naive) != analysis::orientation_2_of(c, mpfr);
       ++compared;
     }
   }

@@ -126,8 +126,8 @@ TEST(FilterBound, FailsafeDecidesEveryRandomCase) {
   // always decided.
   const auto w = analysis::uniform_2(100000, 5);
   const auto exact = analysis::exact_signs<analysis::Orientation_2_case>(w.cases);
-  const auto t = analysis::tally(Failsafe_kernel<double>{}, std::span<const analysis::Orientation_2_case>(w.cases),
-                                 std::span<const Certified_sign>(exact));
+  const auto t = analysis::tally(std::span<const analysis::Orientation_2_case>(w.cases),
+                                 std::span<const Certified_sign>(exact), Failsafe_kernel<double>{});
   EXPECT_EQ(t.uncertain, 0u);
   EXPECT_EQ(t.wrong(), 0u);
 }

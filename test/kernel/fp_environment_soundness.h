@@ -46,9 +46,9 @@ std::size_t wrong_answers_in(const Fp_environment_setting& setting, const Enviro
     }
   };
   run("orientation_2", d.orientation_2,
-      [&](const analysis::Orientation_2_case& c) { return analysis::orientation_2_of(k, c); });
+      [&](const analysis::Orientation_2_case& c) { return analysis::orientation_2_of(c, k); });
   run("orientation_3", d.orientation_3,
-      [&](const analysis::Orientation_3_case& c) { return analysis::orientation_3_of(k, c); });
+      [&](const analysis::Orientation_3_case& c) { return analysis::orientation_3_of(c, k); });
   const auto pt = k.construct_point_2_object();
   const auto compare = k.compare_xy_2_object();
   run("compare_xy", d.compare_xy, [&](const Compare_case& c) { return compare(pt(c.x1, c.y1), pt(c.x2, c.y2)); });

@@ -52,8 +52,8 @@ TEST(FpEnvironmentSoundness, TheFamiliesAreHardForANaiveKernel) {
   // 63108). Floors: 1% differ, 10% wrong.
   const Environment_data& d = environment_data(Input_precision::binary64);
   const Naive_kernel<double> k;
-  const auto o2 = [&](const analysis::Orientation_2_case& c) { return analysis::orientation_2_of(k, c); };
-  const auto o3 = [&](const analysis::Orientation_3_case& c) { return analysis::orientation_3_of(k, c); };
+  const auto o2 = [&](const analysis::Orientation_2_case& c) { return analysis::orientation_2_of(c, k); };
+  const auto o3 = [&](const analysis::Orientation_3_case& c) { return analysis::orientation_3_of(c, k); };
   const auto built_for_environments = [](const std::string& family) {
     return family == "subnormal" || family == "underflowing-products" || family == "flushed-differences";
   };

@@ -126,14 +126,14 @@ TYPED_TEST_P(Soundness, Orientation2) {
   using K = TypeParam;
   const K& k = this->kernel;
   check_soundness<K>("orientation_2", this->data().orientation_2,
-                     [&](const analysis::Orientation_2_case& c) { return analysis::orientation_2_of(k, c); });
+                     [&](const analysis::Orientation_2_case& c) { return analysis::orientation_2_of(c, k); });
 }
 
 TYPED_TEST_P(Soundness, Orientation3) {
   using K = TypeParam;
   const K& k = this->kernel;
   check_soundness<K>("orientation_3", this->data().orientation_3,
-                     [&](const analysis::Orientation_3_case& c) { return analysis::orientation_3_of(k, c); });
+                     [&](const analysis::Orientation_3_case& c) { return analysis::orientation_3_of(c, k); });
 }
 
 TYPED_TEST_P(Soundness, CoplanarOrientation) {

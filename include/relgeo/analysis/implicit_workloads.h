@@ -37,6 +37,7 @@
 #include "relgeo/analysis/predicate_workloads.h"
 #include "relgeo/core/dyadic.h"
 #include "relgeo/core/rounding.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/implicit_point.h"
 
 namespace relgeo::analysis {
@@ -49,7 +50,7 @@ struct Implicit_point_definition {
 
 /// The point a definition describes, built by kernel K (empty when K
 /// refuses it: the point does not exist, or K cannot certify that it does).
-template <class K>
+template <IntersectionKernel_3 K>
 std::optional<typename K::Implicit_point_3> build_implicit_point(const K& k, const Implicit_point_definition& d) {
   const auto point = k.construct_point_3_object();
   const auto make = k.construct_implicit_point_3_object();

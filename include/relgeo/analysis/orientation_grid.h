@@ -34,7 +34,7 @@ Orientation_grid_result evaluate_orientation_grid(const Orientation_grid_triple&
   const std::vector<Orientation_2_case> cases = grid_cases(triple, size);
   r.exact = exact_signs<Orientation_2_case>(cases);
   r.answers.reserve(cases.size());
-  for (const auto& c : cases) r.answers.push_back(orientation_2_of(k, c));
+  for (const auto& c : cases) r.answers.push_back(orientation_2_of(c, k));
   for (std::size_t i = 0; i < cases.size(); ++i) r.tally.add(r.exact[i], r.answers[i]);
   return r;
 }

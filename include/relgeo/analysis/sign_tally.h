@@ -49,13 +49,13 @@ struct Sign_tally {
 
 /// orientation_2 of a case under kernel K (coordinates converted by K).
 template <OrientationKernel_2 K>
-Certified_sign orientation_2_of(const K& k, const Orientation_2_case& c) {
+Certified_sign orientation_2_of(const Orientation_2_case& c, const K& k) {
   const auto pt = k.construct_point_2_object();
   return k.orientation_2_object()(pt(c.px, c.py), pt(c.qx, c.qy), pt(c.rx, c.ry));
 }
 /// orientation_3 of a case under kernel K.
 template <OrientationKernel_3 K>
-Certified_sign orientation_3_of(const K& k, const Orientation_3_case& c) {
+Certified_sign orientation_3_of(const Orientation_3_case& c, const K& k) {
   const auto pt = k.construct_point_3_object();
   const auto& v = c.c;
   return k.orientation_3_object()(pt(v[0], v[1], v[2]), pt(v[3], v[4], v[5]),
@@ -69,20 +69,20 @@ std::vector<Certified_sign> exact_signs(std::span<const Case> cases) {
   std::vector<Certified_sign> out;
   out.reserve(cases.size());
   for (const Case& c : cases) {
-    if constexpr (std::is_same_v<Case, Orientation_2_case>) out.push_back(orientation_2_of(exact, c));
-    else out.push_back(orientation_3_of(exact, c));
+    if constexpr (std::is_same_v<Case, Orientation_2_case>) out.push_back(orientation_2_of(c, exact));
+    else out.push_back(orientation_3_of(c, exact));
   }
   return out;
 }
 
 /// Tally of kernel K's answers on `cases` against `exact`.
-template <class K, class Case>
-Sign_tally tally(const K& k, std::span<const Case> cases, std::span<const Certified_sign> exact) {
+template <KernelProperties K, class Case>
+Sign_tally tally(std::span<const Case> cases, std::span<const Certified_sign> exact, const K& k) {
   if (cases.size() != exact.size()) throw Precondition_violation("tally: sizes differ");
   Sign_tally t;
   for (std::size_t i = 0; i < cases.size(); ++i) {
-    if constexpr (std::is_same_v<Case, Orientation_2_case>) t.add(exact[i], orientation_2_of(k, cases[i]));
-    else t.add(exact[i], orientation_3_of(k, cases[i]));
+    if constexpr (std::is_same_v<Case, Orientation_2_case>) t.add(exact[i], orientation_2_of(cases[i], k));
+    else t.add(exact[i], orientation_3_of(cases[i], k));
   }
   return t;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/point.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/rounding_repair.h"
@@ -144,7 +145,7 @@ struct Boolean_counts {
 };
 
 /// The result of relgeo::boolean under kernel K.
-template <class K>
+template <IntersectionKernel_3 K>
 struct Boolean_result {
   enum class Status : std::uint8_t { ok, failed };
   Status status = Status::ok;

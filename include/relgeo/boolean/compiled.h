@@ -8,6 +8,7 @@
 #pragma once
 
 #include "relgeo/boolean/boolean_types.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/kernel/naive_kernel.h"
@@ -31,7 +32,7 @@ namespace relgeo {
 /// \throws Invalid_operand when an operand is open, non-manifold,
 /// inconsistently oriented, degenerate, non-finite or self-intersecting
 /// (options.check_operands), before any other work.
-template <class K = Filtered_exact_kernel>
+template <IntersectionKernel_3 K = Filtered_exact_kernel>
 Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b,
                           Boolean_operation op, const K& k = K{}, const Boolean_options& options = {});
 

@@ -22,6 +22,7 @@
 #include "relgeo/boolean/boolean_types.h"
 #include "relgeo/boolean/mesh_boolean.h"
 #include "relgeo/core/internal/stopwatch.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/self_intersection.h"
 
 namespace relgeo {
@@ -107,7 +108,7 @@ struct Csg_result {
 
 namespace internal {
 
-template <class K>
+template <IntersectionKernel_3 K>
 class Csg_evaluator {
  public:
   Csg_evaluator(const K& k, const Csg_options& o) : k_(k), options_(o) {
@@ -208,7 +209,7 @@ class Csg_evaluator {
 /// \throws Invalid_csg_node (before any Boolean) for an operation with fewer
 /// than two arguments, a leaf without a mesh, and, with
 /// `options.boolean.check_operands`, a leaf that is not a valid solid.
-template <class K = Filtered_exact_kernel>
+template <IntersectionKernel_3 K = Filtered_exact_kernel>
 Csg_result csg(const Csg_node& tree, const K& k = K{}, const Csg_options& options = {}) {
   internal::Stopwatch clock;
   internal::Csg_evaluator<K> e(k, options);

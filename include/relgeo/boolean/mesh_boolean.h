@@ -63,7 +63,7 @@
 namespace relgeo {
 namespace internal {
 
-template <class K>
+template <IntersectionKernel_3 K>
 class Boolean_engine {
  public:
   using P = typename K::Point_3;
@@ -783,7 +783,7 @@ concept Runs_on_filtered_exact_kernel =
 
 /// The result of the filtered exact kernel as a result of kernel K over
 /// rationals: the same faces, the vertices as K's exact points.
-template <class K>
+template <IntersectionKernel_3 K>
 Boolean_result<K> with_exact_points(Boolean_result<Filtered_exact_kernel>&& r) {
   Boolean_result<K> out;
   out.status = r.status == Boolean_result<Filtered_exact_kernel>::Status::ok ? Boolean_result<K>::Status::ok
@@ -811,7 +811,7 @@ Boolean_result<K> with_exact_points(Boolean_result<Filtered_exact_kernel>&& r) {
 
 // relgeo::boolean (declared with its documentation and defaults in
 // boolean/compiled.h).
-template <class K>
+template <IntersectionKernel_3 K>
 Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b,
                           Boolean_operation op, const K& k, const Boolean_options& options) {
   if constexpr (internal::Runs_on_filtered_exact_kernel<K>) {

@@ -51,6 +51,7 @@
 #include "relgeo/boolean/subdivision_validation.h"
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/internal/stopwatch.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/point_mesh_distance.h"
 #include "relgeo/mesh/validity.h"
 #include "relgeo/subdivision/limit_evaluation.h"
@@ -129,7 +130,7 @@ inline Operand_at_level operand_at_level(const Triangle_mesh<Point_3<double>>& m
 /// "A (limit mesh at level k)"), before any other work.
 /// A kernel that cannot decide the polyhedral Boolean (fail-safe, interval)
 /// gives a failed result naming the undecided pairs (result.polyhedral).
-template <class K = Filtered_exact_kernel>
+template <IntersectionKernel_3 K = Filtered_exact_kernel>
 Subdivision_boolean_result<K> subdivision_boolean(const Triangle_mesh<Point_3<double>>& s,
                                                   const Triangle_mesh<Point_3<double>>& s2, Boolean_operation op,
                                                   unsigned levels, const K& k = K{},

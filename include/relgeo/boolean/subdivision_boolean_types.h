@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "relgeo/boolean/boolean_types.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/solid_validation.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/loop_weights.h"
@@ -178,7 +179,7 @@ struct Subdivision_boolean_counts {
 };
 
 /// The result of relgeo::subdivision_boolean under kernel K.
-template <class K>
+template <IntersectionKernel_3 K>
 struct Subdivision_boolean_result {
   enum class Status : std::uint8_t { ok, failed };
   Status status = Status::ok;

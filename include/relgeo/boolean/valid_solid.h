@@ -21,6 +21,7 @@
 
 #include "relgeo/boolean/boolean_types.h"
 #include "relgeo/boolean/mesh_boolean.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/self_intersection.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
@@ -43,7 +44,7 @@ class Valid_solid {
   /// tests on the output's doubles, under every kernel), or the output is
   /// empty (the exact result is the empty solid: operands apart, say, which
   /// the validation does not count as a solid); nothing otherwise.
-  template <class K>
+  template <IntersectionKernel_3 K>
   static std::optional<Valid_solid> of(const Boolean_result<K>& r) {
     if (!r.ok() || r.validation.kernel.empty()) return std::nullopt;
     if (!r.mesh.faces.empty() && !r.validation.is_valid_solid()) return std::nullopt;
@@ -64,7 +65,7 @@ class Valid_solid {
 
 /// relgeo::boolean of two certified solids: the same result as on their
 /// meshes, without the operand checks (options.check_operands is ignored).
-template <class K = Filtered_exact_kernel>
+template <IntersectionKernel_3 K = Filtered_exact_kernel>
 Boolean_result<K> boolean(const Valid_solid& a, const Valid_solid& b, Boolean_operation op, const K& k = K{},
                           Boolean_options options = {}) {
   options.check_operands = false;

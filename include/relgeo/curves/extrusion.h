@@ -107,7 +107,7 @@ namespace relgeo {
 /// relgeo::graham_fortune as a function object (the default: stable).
 struct Graham_fortune_hull {
   static constexpr std::string_view name = "graham-fortune";
-  template <class K>
+  template <OrientationKernel_2 K>
   Hull_result<typename K::Point_2> operator()(std::span<const typename K::Point_2> p, const K& k) const {
     return graham_fortune<K>(p, k);
   }
@@ -115,7 +115,7 @@ struct Graham_fortune_hull {
 /// relgeo::monotone_chain as a function object.
 struct Monotone_chain_hull {
   static constexpr std::string_view name = "monotone-chain";
-  template <class K>
+  template <OrientationKernel_2 K>
   Hull_result<typename K::Point_2> operator()(std::span<const typename K::Point_2> p, const K& k) const {
     return monotone_chain<K>(p, k);
   }
@@ -123,7 +123,7 @@ struct Monotone_chain_hull {
 /// relgeo::graham_incremental as a function object (unstable with naive kernels).
 struct Graham_incremental_hull {
   static constexpr std::string_view name = "graham-incremental";
-  template <class K>
+  template <OrientationKernel_2 K>
   Hull_result<typename K::Point_2> operator()(std::span<const typename K::Point_2> p, const K& k) const {
     return graham_incremental<K>(p, k);
   }
@@ -251,7 +251,7 @@ struct Computed_hull {
   double backward = 0;                    ///< +inf when unusable
 };
 
-template <class K, class Algorithm>
+template <OrientationKernel_2 K, class Algorithm>
 Computed_hull run_hull(std::span<const Point_2<double>> pts, const K& k, const Algorithm& algorithm,
                        Extrusion_report& rep) {
   using P = typename K::Point_2;
@@ -296,7 +296,7 @@ inline Extrusion_verdict decide(double margin_lower, double margin_upper, double
 /// The steps of check_extrusion, sharing the contour, the options, the
 /// kernel and hull algorithm, and the report being filled: one member per
 /// condition, and the bookkeeping of each hull problem.
-template <class K, class Algorithm>
+template <OrientationKernel_2 K, class Algorithm>
 class Extrusion_check {
  public:
   Extrusion_check(const Bezier_contour& contour, const Extrusion_options& options, const K& k,

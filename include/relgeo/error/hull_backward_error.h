@@ -94,7 +94,7 @@ inline Hull_backward_error hull_backward_error(std::span<const Point_2<double>> 
 ///   2^61]); outside that the bound is empty. (The scan runs in the default
 ///   floating-point environment, which graham_fortune establishes.)
 /// * Other kernels (naive, interval, MPFR): empty.
-template <class K>
+template <OrientationKernel_2 K>
 std::optional<double> graham_fortune_backward_error_bound(std::span<const Point_2<double>> input) {
   if constexpr (K::has_exact_predicates) {
     return 0.0;

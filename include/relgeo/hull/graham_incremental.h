@@ -16,7 +16,7 @@ namespace internal {
 
 /// The body of graham_incremental (inside hull_frame): the hull of `points`
 /// as input indices into r.
-template <class K>
+template <OrientationKernel_2 K>
 void incremental_hull(std::span<const typename K::Point_2> points, const K& k, Hull_result<typename K::Point_2>& r) {
   const auto orientation = k.orientation_2_object();
   const auto compare = k.compare_xy_2_object();

@@ -38,6 +38,7 @@
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/core/errors.h"
 #include "relgeo/core/number_traits.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/implicit_point.h"
 #include "relgeo/mesh/internal/point_access.h"
 
@@ -99,7 +100,7 @@ struct Triangle_intersection_options {
 /// 2 for a segment, the vertices of the convex polygon in order for a
 /// coplanar overlap; input vertices are explicit points, others LPI points),
 /// where each point lies on each triangle, and the perturbations applied.
-template <class K>
+template <IntersectionKernel_3 K>
 struct Triangle_intersection {
   using Point = typename K::Implicit_point_3;
   Triangle_intersection_kind kind = Triangle_intersection_kind::undecided;
@@ -111,7 +112,7 @@ struct Triangle_intersection {
 
 namespace internal {
 
-template <class K>
+template <IntersectionKernel_3 K>
 class Triangle_intersector {
  public:
   using P = typename K::Point_3;
@@ -483,10 +484,7 @@ class Triangle_intersector {
     using FT = typename A::FT;
     FT c[3] = {A::x(e0), A::y(e0), A::z(e0)};
     const FT moved = FT(c[axis] + FT(1));
-    bool absorbed = false;
-    if constexpr (requires { K::compare_ft(moved, c[axis]); })
-      absorbed = K::compare_ft(moved, c[axis]) == Certified_sign::zero;
-    if (absorbed) {
+    if (K::compare_ft(moved, c[axis]) == Certified_sign::zero) {
       const FT doubled = FT(c[axis] * FT(2));
       c[axis] = is_finite_number(doubled) ? doubled : FT(c[axis] / FT(2));
     } else {
@@ -589,7 +587,7 @@ class Triangle_intersector {
 namespace internal {
 
 // Fast test of Guigue and Devillers: orientations of input points only.
-template <class K>
+template <OrientationKernel_3 K>
 class Triangle_overlap_test {
  public:
   using P = typename K::Point_3;
@@ -707,7 +705,7 @@ class Triangle_overlap_test {
 /// counts), from orientations of the input points only (Guigue-Devillers):
 /// the fast test when the intersection itself is not needed. Empty when the
 /// kernel cannot decide. \pre neither triangle is degenerate.
-template <class K>
+template <OrientationKernel_3 K>
 std::optional<bool> do_intersect_triangles(const std::array<typename K::Point_3, 3>& a,
                                            const std::array<typename K::Point_3, 3>& b, const K& k = K{}) {
   return internal::Triangle_overlap_test<K>(k).run(a, b);
@@ -720,7 +718,7 @@ std::optional<bool> do_intersect_triangles(const std::array<typename K::Point_3,
 /// (three collinear points: Precondition_violation when the kernel decides
 /// it). Exact under kernels with exact predicates; see the file comment for
 /// the fail-safe perturbation. Complexity: constant.
-template <class K>
+template <IntersectionKernel_3 K>
 Triangle_intersection<K> intersect_triangles(const std::array<typename K::Point_3, 3>& a,
                                              const std::array<typename K::Point_3, 3>& b, const K& k = K{},
                                              const Triangle_intersection_options& options = {}) {

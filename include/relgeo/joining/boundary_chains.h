@@ -27,6 +27,7 @@
 
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/joining/joining_errors.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/point.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/surfaces/nurbs_curve.h"
@@ -235,7 +236,7 @@ namespace internal {
 
 /// Whether closed segments ab and cd intersect (certified: empty when K
 /// cannot decide). Coincident endpoints (bitwise) are decided without K.
-template <class K>
+template <OrientationKernel_2 K>
 std::optional<bool> segments_intersect(const K& k, const Point_2<double>& a, const Point_2<double>& b,
                                        const Point_2<double>& c, const Point_2<double>& d) {
   const auto same = [](const Point_2<double>& p, const Point_2<double>& q) { return p.x == q.x && p.y == q.y; };
@@ -270,7 +271,7 @@ std::optional<bool> segments_intersect(const K& k, const Point_2<double>& a, con
 /// decided with K's certified orientation_2; an undecidable one counts as an
 /// intersection (the loop is cut: never a crossing left in place).
 /// O(n^2) segment tests per pass.
-template <class K>
+template <OrientationKernel_2 K>
 std::vector<std::size_t> delete_loops(std::span<const Point_2<double>> p, const K& k = K{}) {
   std::vector<std::size_t> keep(p.size());
   for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = i;

@@ -28,6 +28,7 @@
 #include "relgeo/core/internal/union_find.h"
 #include "relgeo/joining/boundary_chains.h"
 #include "relgeo/joining/error_measures.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/point.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/surfaces/trimmed_surface.h"
@@ -118,7 +119,7 @@ class Segment_grid {
 /// \param faces the patch's triangles, counter-clockwise in (u,v);
 /// \param uv the vertices' parameters; \param topology of `faces`;
 /// \param boundary dR: closed loops in (u,v) (outer and holes).
-template <class K>
+template <OrientationKernel_2 K>
 Central_mesh central_mesh(std::span<const Triangle> faces, std::span<const Point_2<double>> uv, const Mesh_topology& topology,
                           const std::vector<std::vector<Point_2<double>>>& boundary, const Central_mesh_options& options = {},
                           const K& k = K{}) {

@@ -34,6 +34,7 @@
 #include "relgeo/core/errors.h"
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/rounding.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/point.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
@@ -110,7 +111,7 @@ namespace internal {
 /// K's orientation of three (u,v) points, with coincident points (equal
 /// coordinates, bit for bit) answered `zero` without the kernel: a fail-safe
 /// or interval kernel cannot certify the zero of (p, q, p).
-template <class K>
+template <OrientationKernel_2 K>
 Certified_sign uv_orientation(const K& k, const Point_2<double>& a, const Point_2<double>& b, const Point_2<double>& c) {
   const auto same = [](const Point_2<double>& p, const Point_2<double>& q) { return p.x == q.x && p.y == q.y; };
   if (same(a, b) || same(b, c) || same(a, c)) return Certified_sign::zero;
@@ -134,7 +135,7 @@ struct Orientation_report {
 /// certified orientation_2; `expected` is the orientation of a valid triangle
 /// (positive for a face whose outward normal is Su x Sv, negative for a
 /// reversed face).
-template <class K>
+template <OrientationKernel_2 K>
 Orientation_report uv_orientations(std::span<const Triangle> faces, std::span<const Point_2<double>> uv,
                                    Certified_sign expected = Certified_sign::positive, const K& k = K{}) {
   Orientation_report r;
@@ -164,7 +165,7 @@ struct Overlap_report {
 /// the line of one of their edges) with K's certified orientation_2;
 /// candidates from a uniform grid over the triangles' boxes. Degenerate
 /// triangles (collinear in (u,v)) have no interior and overlap nothing.
-template <class K>
+template <OrientationKernel_2 K>
 Overlap_report uv_overlaps(std::span<const Triangle> faces, std::span<const Point_2<double>> uv, const K& k = K{}) {
   Overlap_report report;
   // Positively oriented corners per face (degenerate faces are skipped).

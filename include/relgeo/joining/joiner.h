@@ -48,6 +48,7 @@
 #include "relgeo/core/floating_point.h"
 #include "relgeo/joining/domain_mesher.h"
 #include "relgeo/joining/internal/join_steps.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/mesh_topology.h"
@@ -238,7 +239,7 @@ inline Face_output reproject_face(Face_state& s, const std::vector<Joint>& joint
 }
 
 /// The measures of one face's part of the result (file comment).
-template <class K>
+template <OrientationKernel_2 K>
 void measure_face(Face_state& s, const Face_output& out, const std::vector<Joint>& joints,
                   const std::map<int, Point_3<double>>& vertex_points, const Joint_vertices& joint_vertices, const K& k) {
   // The face's height field: local vertices, then its joint vertices.
@@ -344,9 +345,9 @@ inline void measure_mesh(const Triangle_mesh<Point_3<double>>& m, const std::vec
 /// \throws Joining_input_error, Projection_error, Invalid_mesh,
 /// Non_finite_input, Degenerate_surface for bad input; Joining_failure when a
 /// step fails (e.g. no central mesh left, conformity rounds exhausted).
-template <class K = Filtered_exact_kernel>
+template <OrientationKernel_2 K = Filtered_exact_kernel>
 Join_result join_meshes(const Surface_model& model, const std::vector<Triangle_mesh<Point_3<double>>>& meshes,
-                        const Join_options& options = {}, const K& k = K{}) {
+                        const K& k = K{}, const Join_options& options = {}) {
   using namespace internal::join;
   const internal::Stopwatch start;
   Join_result result;

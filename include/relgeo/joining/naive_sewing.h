@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "relgeo/joining/internal/join_steps.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 
 namespace relgeo {
@@ -169,7 +170,7 @@ inline std::vector<std::vector<Triangle>> merge_sewn_faces(const std::vector<Fac
 
 /// The sewn faces measured like the joiner's (projected again onto their
 /// faces; certified orientation and overlaps), and the whole mesh.
-template <class K>
+template <OrientationKernel_2 K>
 void measure_sewn(std::vector<Face_state>& faces, const std::vector<Sewing_edit>& edits,
                   const std::vector<std::vector<Triangle>>& face_triangles, const std::set<Index>& seam_vertices,
                   Join_result& result, const K& k) {
@@ -219,9 +220,9 @@ void measure_sewn(std::vector<Face_state>& faces, const std::vector<Sewing_edit>
 /// \brief Naive midpoint sewing of the mesh patches along the model's
 /// shared edges (thesis Sec. 4.1); free edges are left as they are.
 /// \throws as join_meshes for bad input.
-template <class K = Filtered_exact_kernel>
+template <OrientationKernel_2 K = Filtered_exact_kernel>
 Join_result naive_sewing(const Surface_model& model, const std::vector<Triangle_mesh<Point_3<double>>>& meshes,
-                         const Join_options& options = {}, const K& k = K{}) {
+                         const K& k = K{}, const Join_options& options = {}) {
   using namespace internal::join;
   const internal::Stopwatch start;
   Join_result result;

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "relgeo/joining/internal/join_steps.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/surfaces/occt_conversion.h"
 
@@ -39,9 +40,9 @@ struct Occt_sewing_options {
 /// \brief Sews the model's faces with OpenCASCADE and tessellates the shell
 /// (the input meshes are only measured, as "before").
 /// \throws Joining_failure when OpenCASCADE fails; bad input as join_meshes.
-template <class K = Filtered_exact_kernel>
+template <OrientationKernel_2 K = Filtered_exact_kernel>
 Join_result occt_sewing(const Surface_model& model, const std::vector<Triangle_mesh<Point_3<double>>>& meshes,
-                        const Occt_sewing_options& options = {}, const K& k = K{}) {
+                        const K& k = K{}, const Occt_sewing_options& options = {}) {
   using namespace internal::join;
   const internal::Stopwatch start;
   Join_result result;

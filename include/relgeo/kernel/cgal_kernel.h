@@ -58,7 +58,21 @@ struct No_implicit_points {};
 
 }  // namespace internal
 
+/// \concept CgalKernel
+/// A CGAL kernel (CGAL's Kernel concept, the part relgeo's adapter uses):
+/// its number type, points and orientation predicates.
 template <class K>
+concept CgalKernel = requires {
+  typename K::FT;
+  typename K::Point_2;
+  typename K::Point_3;
+  typename K::Orientation_2;
+  typename K::Orientation_3;
+  typename K::Compare_xy_2;
+  typename K::Coplanar_orientation_3;
+};
+
+template <CgalKernel K>
 class Cgal_kernel;
 
 namespace internal {
@@ -70,7 +84,9 @@ using Cgal_implicit_base = std::conditional_t<cgal_has_exact_constructions<CK>,
                                               No_implicit_points>;
 }  // namespace internal
 
-/// Short names of the CGAL kernels relgeo knows; specialise for your own.
+namespace internal {
+// The name() of Cgal_kernel<K>: "cgal", or the short name of a kernel
+// relgeo knows (declared above, so these need no CGAL header).
 template <class K>
 struct Cgal_kernel_name {
   static std::string get() { return "cgal"; }
@@ -87,6 +103,7 @@ template <>
 struct Cgal_kernel_name<CGAL::Epeck> {
   static std::string get() { return "cgal-epeck"; }
 };
+}  // namespace internal
 
 /// \brief Adapter turning a CGAL kernel K (Simple_cartesian<double>, Epick,
 /// Epeck, ...) into a relgeo kernel: the same predicates, answers mapped to
@@ -103,7 +120,7 @@ struct Cgal_kernel_name<CGAL::Epeck> {
 /// Kernels with exact constructions (Epeck) also model IntersectionKernel_3:
 /// an implicit point is a CGAL point constructed in the kernel's lazy exact
 /// number type, the predicates CGAL's own on it (internal/implicit_cgal.h).
-template <class K>
+template <CgalKernel K>
 class Cgal_kernel : public internal::Cgal_implicit_base<K> {
   using Base_ft = typename K::FT;
   static constexpr bool ft_is_exact = internal::cgal_has_exact_constructions<K>;
@@ -114,7 +131,7 @@ class Cgal_kernel : public internal::Cgal_implicit_base<K> {
   using Point_2 = typename K::Point_2;
   using Point_3 = typename K::Point_3;
 
-  static std::string name() { return Cgal_kernel_name<K>::get(); }
+  static std::string name() { return internal::Cgal_kernel_name<K>::get(); }
   static constexpr bool has_exact_predicates = bool(K::Has_filtered_predicates) || ft_is_exact;
   static constexpr bool has_exact_constructions = ft_is_exact;
   static constexpr bool is_certified = has_exact_predicates;
@@ -145,6 +162,13 @@ class Cgal_kernel : public internal::Cgal_implicit_base<K> {
       return Point_3(x, y, z);
     }
   };
+  /// The sign of a - b (NumberComparisonKernel_3): exact for CGAL's number
+  /// types, uncertain when a double is NaN.
+  static Certified_sign compare_ft(const FT& a, const FT& b) {
+    if constexpr (std::is_same_v<FT, double>)
+      if (std::isnan(a) || std::isnan(b)) return Certified_sign::uncertain;
+    return from_cgal(CGAL::compare(a, b));
+  }
   struct Orientation_2 {
     Certified_sign operator()(const Point_2& p, const Point_2& q, const Point_2& r) const {
       return guarded([&] { return from_cgal(typename K::Orientation_2()(p, q, r)); }, p, q, r);

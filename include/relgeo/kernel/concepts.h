@@ -11,6 +11,7 @@
 #include <concepts>
 #include <optional>
 #include <string>
+#include <type_traits>
 
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/kernel/implicit_point.h"
@@ -69,6 +70,34 @@ concept OrientationKernel_3 =
 template <class K>
 concept Kernel = KernelProperties<K> && OrientationKernel_2<K> && OrientationKernel_3<K>;
 
+/// \concept ConstructionKernel_3
+/// Metadata and space points whose coordinates are numbers of K::FT with
+/// its field operations: what constructions in K's numbers need (Loop's
+/// rules build each new point as a weighted sum of old ones).
+template <class K>
+concept ConstructionKernel_3 =
+    KernelProperties<K> && std::copyable<typename K::Point_3> && requires(const typename K::FT& a) {
+      { a + a } -> std::convertible_to<typename K::FT>;
+      { a * a } -> std::convertible_to<typename K::FT>;
+      { a / a } -> std::convertible_to<typename K::FT>;
+    };
+
+/// \concept KernelOrDefault
+/// The kernel template argument of a function that also runs without one:
+/// `void` (the default, which picks the kernel for the mesh's point type:
+/// documented at each function) or a Kernel.
+template <class K>
+concept KernelOrDefault = std::is_void_v<K> || Kernel<K>;
+
+/// \concept NumberComparisonKernel_3
+/// Certified comparison of two numbers of K::FT (`K::compare_ft(a, b)`: the
+/// sign of a - b; `uncertain` when K cannot tell), the construction a
+/// predicate needs when it moves a point off a plane by a number it built.
+template <class K>
+concept NumberComparisonKernel_3 = OrientationKernel_3<K> && requires(const typename K::FT& a) {
+  { K::compare_ft(a, a) } -> std::same_as<Certified_sign>;
+};
+
 /// \concept IntersectionKernel_3
 /// A Kernel with implicit points (kernel/implicit_point.h): `Implicit_point_3`,
 /// an input point or an LPI/TPI point kept by what defines it, cheap to
@@ -77,10 +106,12 @@ concept Kernel = KernelProperties<K> && OrientationKernel_2<K> && OrientationKer
 /// implicit points — orientation_3, the orientation of a projection dropping
 /// one axis, CGAL's coplanar orientation, lexicographic comparison (`zero`:
 /// the same point) — and a double approximation with an error bound. The
-/// soundness rule applies unchanged. What the Booleans need.
+/// soundness rule applies unchanged; and the comparison of numbers
+/// (NumberComparisonKernel_3). What the triangle intersection and the
+/// Booleans need.
 template <class K>
 concept IntersectionKernel_3 =
-    Kernel<K> && std::copyable<typename K::Implicit_point_3> &&
+    Kernel<K> && NumberComparisonKernel_3<K> && std::copyable<typename K::Implicit_point_3> &&
     requires(const K& k, const typename K::Point_3& p, const typename K::Implicit_point_3& i) {
       { k.construct_implicit_point_3_object()(p) } -> std::same_as<typename K::Implicit_point_3>;
       { k.construct_implicit_point_3_object()(p, p, p, p, p) } -> std::same_as<std::optional<typename K::Implicit_point_3>>;

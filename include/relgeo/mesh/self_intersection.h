@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/mesh/face_bvh.h"
@@ -89,7 +90,7 @@ namespace internal {
 /// and faces flagged degenerate (1), undecided (2) or testable (0). Pairs
 /// sharing a vertex flagged in `embedded` (embedded_star_flags) are decided
 /// by that certificate.
-template <class K, class Points>
+template <Kernel K, class Points>
 void find_self_intersections(const K& k, const Points& point, const std::vector<Triangle>& faces,
                              const std::vector<unsigned char>& skip, const Face_bvh& bvh, int threads,
                              Self_intersections& out, const std::vector<unsigned char>* embedded = nullptr) {
@@ -129,7 +130,7 @@ inline std::vector<unsigned char> degenerate_face_flags(const std::vector<std::a
   }
   return flag;
 }
-template <class K, class Points>
+template <Kernel K, class Points>
 std::vector<unsigned char> degenerate_face_flags(const K& k, const Points& point, const std::vector<Triangle>& faces) {
   return degenerate_face_flags(projected_orientations(k, point, faces, /*every_plane=*/false));
 }
@@ -137,7 +138,7 @@ std::vector<unsigned char> degenerate_face_flags(const K& k, const Points& point
 /// The whole test on a mesh whose face hierarchy `bvh` is built; with its
 /// topology `t` (a manifold, consistently oriented mesh) the pairs around
 /// vertices with an embedded star are decided by that certificate.
-template <class K, class P>
+template <Kernel K, class P>
 Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k, const Face_bvh& bvh,
                                            int threads, const Mesh_topology* t = nullptr) {
   const Kernel_points<K, P> point(m.vertices, k);
@@ -169,7 +170,7 @@ Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k
 /// Requires a Kernel (every IntersectionKernel_3 is one). \throws
 /// Invalid_mesh for an index out of range or a non-finite coordinate.
 /// Complexity O(n log n + k) for n faces and k overlapping box pairs.
-template <class K, class P>
+template <Kernel K, class P>
 Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k,
                                            const Self_intersection_options& options) {
   const Face_bvh bvh(m, {.threads = options.threads});  // throws for bad indices and NaN
@@ -177,7 +178,7 @@ Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k
 }
 /// The same with K's default object (K: by default
 /// Default_self_intersection_kernel<P>).
-template <class K = void, class P>
+template <KernelOrDefault K = void, class P>
 Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const Self_intersection_options& options = {}) {
   using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_self_intersection_kernel<P>::type, K>;
   return find_self_intersections(m, Kernel{}, options);
@@ -193,7 +194,7 @@ Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const Self
 /// (\throws Invalid_mesh otherwise; find_self_intersections has no such
 /// precondition). \throws Error (computation_failure) when K leaves a pair
 /// undecided: use find_self_intersections with such kernels.
-template <class K = void, class P>
+template <KernelOrDefault K = void, class P>
 std::vector<std::pair<Index, Index>> self_intersections(const Triangle_mesh<P>& m) {
   (void)Mesh_topology::build(m);  // throws Invalid_mesh for non-manifold input
   const Self_intersections r = find_self_intersections<K>(m);
@@ -213,7 +214,7 @@ namespace internal {
 /// the self-intersection test ran, its face hierarchy in `bvh` (the mesh
 /// Boolean goes on with both); the test on `threads` threads
 /// (Self_intersection_options).
-template <class K, class P>
+template <Kernel K, class P>
 Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& options, Mesh_topology& t,
                         std::optional<Face_bvh>& bvh, int threads = 1) {
   Mesh_report r = internal::check_mesh<K>(m, options, t);
@@ -241,7 +242,7 @@ Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& opt
 /// consistently oriented, non-degenerate, self-intersection-free triangle
 /// mesh. validate_solid (solid_validation.h) adds orientation, volume and
 /// topology in a structured report.
-template <class K = void, class P>
+template <KernelOrDefault K = void, class P>
 Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& options = {}) {
   using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_check_kernel<P>::type, K>;
   Mesh_topology t;

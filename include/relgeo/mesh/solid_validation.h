@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/face_bvh.h"
 #include "relgeo/mesh/internal/component_winding.h"
 #include "relgeo/mesh/internal/exact_volume.h"
@@ -283,7 +284,7 @@ Signed_volumes report_volume(const Triangle_mesh<P>& m, const Face_components& c
 }
 
 // The orientation test (internal/component_winding.h).
-template <class K, class P, class Points>
+template <Kernel K, class P, class Points>
 void report_orientation(const K& k, const Triangle_mesh<P>& m, const Points& point, const Face_bvh& bvh,
                         const Face_components& comps, const Signed_volumes& v, const Solid_validation_options& o,
                         Solid_report& r) {
@@ -323,7 +324,7 @@ void report_orientation(const K& k, const Triangle_mesh<P>& m, const Points& poi
 /// triangle soup. Complexity O(n log n + k) for n faces and k pairs of
 /// overlapping face boxes, plus one segment query per component when there
 /// are several.
-template <class K, class P>
+template <Kernel K, class P>
 Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_validation_options& o = {}) {
   Solid_report r;
   r.kernel = K::name();
@@ -410,7 +411,7 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
 
 /// validate_solid with K's default object (K: by default
 /// Default_self_intersection_kernel<P>).
-template <class K = void, class P>
+template <KernelOrDefault K = void, class P>
 Solid_report validate_solid(const Triangle_mesh<P>& m, const Solid_validation_options& o = {}) {
   using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_self_intersection_kernel<P>::type, K>;
   return validate_solid(m, Kernel{}, o);
@@ -419,7 +420,7 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const Solid_validation_op
 /// \throws Invalid_mesh naming every listed defect (context: the caller)
 /// unless validate_solid finds a valid solid (every check passes; an
 /// undecided check refuses too).
-template <class K = void, class P>
+template <KernelOrDefault K = void, class P>
 void require_valid_solid(const Triangle_mesh<P>& m, const Solid_validation_options& o = {},
                          const std::string& context = "require_valid_solid") {
   const Solid_report r = validate_solid<K>(m, o);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"
@@ -134,7 +135,7 @@ Mesh_report combinatorial_mesh_report(const Triangle_mesh<P>& m, const Mesh_chec
 }
 
 /// check_mesh under kernel K, leaving the mesh's topology in `t`.
-template <class K, class P>
+template <Kernel K, class P>
 Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& options, Mesh_topology& t) {
   using A = internal::Point_access<P>;
   Mesh_report r = internal::combinatorial_mesh_report(m, options, t);
@@ -175,7 +176,7 @@ Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& opti
 /// Geometric checks: non-finite coordinates; collinear faces through K's
 /// coplanar_orientation_3 (an `uncertain` answer gives an `undecided` issue).
 /// Never throws for bad input. Complexity O(V + F).
-template <class K = void, class P>
+template <KernelOrDefault K = void, class P>
 Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& options = {}) {
   using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_check_kernel<P>::type, K>;
   Mesh_topology t;
@@ -184,7 +185,7 @@ Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& opti
 
 /// Throws Invalid_mesh with every issue of check_mesh (context names the
 /// caller in the message); returns normally for a valid mesh.
-template <class K = void, class P>
+template <KernelOrDefault K = void, class P>
 void require_valid_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& options = {},
                         const std::string& context = "require_valid_mesh") {
   Mesh_report r = check_mesh<K>(m, options);

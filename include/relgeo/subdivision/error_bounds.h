@@ -70,6 +70,7 @@
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/number_traits.h"
 #include "relgeo/core/rounding.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/box_spline.h"
@@ -119,7 +120,7 @@ struct Loop_face_bound {
 
 /// \brief The limit mesh at a level with, per face, enclosures of the limit
 /// surface over it (see the file comment for the methods).
-template <class K>
+template <ConstructionKernel_3 K>
 struct Loop_limit_mesh_bounds {
   using FT = typename K::FT;
   using Point = typename K::Point_3;
@@ -160,7 +161,7 @@ struct Loop_limit_mesh_bounds {
 /// subdivide locally (~3 irregular_depth regular sub-patches).
 /// Thread safety: the object is immutable after construction and compute()
 /// keeps its scratch on its own stack: one object can serve many threads.
-template <class K>
+template <ConstructionKernel_3 K>
 class Loop_error_bounds {
  public:
   using FT = typename K::FT;
@@ -168,10 +169,9 @@ class Loop_error_bounds {
   using Mesh = Triangle_mesh<Point>;
   using Tr = Loop_kernel_number_traits<K>;
 
-  /// The kernel argument is accepted for a uniform interface: the bounds use
-  /// only K's number type, never a kernel object.
-  explicit Loop_error_bounds(const Loop_options& options = {}, const Loop_bound_options& bounds = {},
-                             const K& /*kernel*/ = K{})
+  /// K is a type argument only: the bounds use its number type, never a
+  /// kernel object.
+  explicit Loop_error_bounds(const Loop_options& options = {}, const Loop_bound_options& bounds = {})
       : options_(options), bounds_(bounds), one_24_(fraction(1, 24)), one_16_(fraction(1, 16)),
         universal_(universal_ranges(bounds.universal_depth, one_24_, one_16_)) {}
 
@@ -489,7 +489,7 @@ class Loop_error_bounds {
 
 /// Convenience: the limit mesh of `control` at `level` with its error bounds
 /// under kernel K (default: Default_loop_kernel of the point type).
-template <class K = void, class P>
+template <KernelOrDefault K = void, class P>
 auto loop_limit_mesh_bounds(const Triangle_mesh<P>& control, unsigned level, const Loop_options& options = {},
                             const Loop_bound_options& bounds = {}) {
   using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_loop_kernel<P>::type, K>;

@@ -50,6 +50,7 @@
 
 #include "relgeo/core/errors.h"
 #include "relgeo/core/fp_environment.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
@@ -113,7 +114,7 @@ struct Loop_limit_jet {
 /// Complexity: regular and regular-crease patches O(1) (a 15 x 12 integer
 /// matrix and a quartic); irregular patches O(levels), levels ~ log2(1/d) + 2
 /// with d the parameter distance to the nearest irregular vertex.
-template <class K>
+template <ConstructionKernel_3 K>
 class Loop_limit_surface {
  public:
   using FT = typename K::FT;
@@ -125,9 +126,9 @@ class Loop_limit_surface {
   /// smallest positive double); exceeding it is reported as a failure.
   static constexpr unsigned max_levels = 1200;
 
-  /// The kernel argument is accepted for a uniform interface: evaluation
-  /// uses only K's number type, never a kernel object.
-  explicit Loop_limit_surface(const Mesh& control, const Loop_options& options = {}, const K& /*kernel*/ = K{})
+  /// K is a type argument only: evaluation uses its number type, never a
+  /// kernel object.
+  explicit Loop_limit_surface(const Mesh& control, const Loop_options& options = {})
       : weights_(options) {
     for (std::size_t v = 0; v < control.vertices.size(); ++v) {
       if (!internal::point_is_finite(control.vertices[v]))
@@ -431,7 +432,7 @@ class Loop_limit_surface {
 /// Convenience: the limit surface point at (u, v) of face f of `control`
 /// under kernel K (default: Default_loop_kernel of the point type). Builds a
 /// Loop_limit_surface: for many queries keep one.
-template <class K = void, class P>
+template <KernelOrDefault K = void, class P>
 P loop_limit_point(const Triangle_mesh<P>& control, Index f, double u, double v, const Loop_options& options = {}) {
   using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_loop_kernel<P>::type, K>;
   return Loop_limit_surface<Kernel>(control, options).evaluate(f, u, v);

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/internal/loop_rules.h"
@@ -25,7 +26,7 @@ namespace relgeo {
 namespace internal {
 /// The stencil of a vertex rule (vertex_point_rule or limit_point_rule) at
 /// vertex v of a whole mesh, reserving v's valence first.
-template <class K, class Rule_of>
+template <ConstructionKernel_3 K, class Rule_of>
 Stencil<typename K::FT> mesh_vertex_stencil(const Mesh_topology& t, const Loop_features& f, Loop_weights<K>& w,
                                             Index v, Rule_of&& rule_of) {
   w.reserve(t.valence(v));
@@ -38,7 +39,7 @@ Stencil<typename K::FT> mesh_vertex_stencil(const Mesh_topology& t, const Loop_f
 /// The refinement stencil of (old) vertex v: smooth and dart (1 - n beta) v
 /// + beta sum p_i over the ring; crease (3/4, 1/8, 1/8) with its crease
 /// neighbours; corner and isolated vertices fixed.
-template <class K>
+template <ConstructionKernel_3 K>
 Stencil<typename K::FT> vertex_point_stencil(const Mesh_topology& t, const Loop_features& f,
                                              Loop_weights<K>& w, Index v) {
   return internal::mesh_vertex_stencil(t, f, w, v, internal::vertex_point_rule<K>);
@@ -46,7 +47,7 @@ Stencil<typename K::FT> vertex_point_stencil(const Mesh_topology& t, const Loop_
 
 /// The refinement stencil of the new vertex on edge e: its ends, then (not
 /// on creases) the two opposite vertices.
-template <class K>
+template <ConstructionKernel_3 K>
 Stencil<typename K::FT> edge_point_stencil(const Mesh_topology& t, const Loop_features& f,
                                            Loop_weights<K>& w, Index e) {
   Stencil<typename K::FT> s;
@@ -57,7 +58,7 @@ Stencil<typename K::FT> edge_point_stencil(const Mesh_topology& t, const Loop_fe
 /// The limit-position stencil of vertex v (thesis Fig. 2.6): smooth/dart
 /// (1 - n chi) v + chi sum p_i; crease (1/6, 2/3, 1/6) on its crease
 /// neighbours; corner and isolated vertices are fixed.
-template <class K>
+template <ConstructionKernel_3 K>
 Stencil<typename K::FT> limit_stencil(const Mesh_topology& t, const Loop_features& f,
                                       Loop_weights<K>& w, Index v) {
   return internal::mesh_vertex_stencil(t, f, w, v, internal::limit_point_rule<K>);
@@ -89,7 +90,7 @@ Stencil<typename K::FT> limit_stencil(const Mesh_topology& t, const Loop_feature
 ///  * corner: first = p_0 - v, second = p_k - v (the end tangents of the
 ///    two crease curves, exact: eigenvalue 1/2 of the end rule).
 ///  * isolated: empty stencils.
-template <class K>
+template <ConstructionKernel_3 K>
 std::pair<Stencil<typename K::FT>, Stencil<typename K::FT>> tangent_stencils(
     const Mesh_topology& t, const Loop_features& f, Loop_weights<K>& w, Index v,
     Index h = invalid_index) {

@@ -12,6 +12,7 @@
 
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/errors.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_topology.h"
@@ -59,16 +60,16 @@ struct Default_loop_kernel<Point_3<FT>> : Kernel_for_number<FT> {};
 /// validated) once, then derived level by level (Mesh_topology::refined).
 /// The object keeps scratch buffers between calls (repeated calls do not
 /// reallocate them): use one object per thread.
-template <class K>
+template <ConstructionKernel_3 K>
 class Loop_subdivider {
  public:
   using FT = typename K::FT;
   using Point = typename K::Point_3;
   using Mesh = Triangle_mesh<Point>;
 
-  /// The kernel argument is accepted for a uniform interface: refinement
-  /// uses only K's number type (constructions in FT), never a kernel object.
-  explicit Loop_subdivider(const Loop_options& options = {}, const K& /*kernel*/ = K{}) : weights_(options) {}
+  /// K is a type argument only: refinement uses its number type
+  /// (constructions in FT), never a kernel object.
+  explicit Loop_subdivider(const Loop_options& options = {}) : weights_(options) {}
 
   const Loop_options& options() const { return weights_.options(); }
   Loop_weights<K>& weights() { return weights_; }
@@ -203,7 +204,7 @@ class Loop_subdivider {
   bool any_special_ = false;  // a crease edge or a tagged corner (BLZ needs sectors even without creases)
 };
 
-template <class K>
+template <ConstructionKernel_3 K>
 auto Loop_subdivider<K>::step(const Mesh& m, const Level& lv, bool to_limit, Level* next) -> Mesh {
   const Acc* p = coordinates(m);
   sum_rings(lv, p);
@@ -238,7 +239,7 @@ auto Loop_subdivider<K>::step(const Mesh& m, const Level& lv, bool to_limit, Lev
 }
 
 // Coordinates in FT (relgeo points already are; CGAL points are read once).
-template <class K>
+template <ConstructionKernel_3 K>
 auto Loop_subdivider<K>::coordinates(const Mesh& m) -> const Acc* {
   if constexpr (native) {
     return m.vertices.data();
@@ -252,7 +253,7 @@ auto Loop_subdivider<K>::coordinates(const Mesh& m) -> const Acc* {
 
 // Ring sums, crease-neighbour sums and valences, edge by edge (no ordered
 // rings needed); reserves the weights of the largest valence.
-template <class K>
+template <ConstructionKernel_3 K>
 void Loop_subdivider<K>::sum_rings(const Level& lv, const Acc* p) {
   const Mesh_topology& t = lv.topology;
   const Loop_features& f = lv.features;
@@ -280,7 +281,7 @@ void Loop_subdivider<K>::sum_rings(const Level& lv, const Acc* p) {
 }
 
 // BLZ: the sector size of every outgoing half-edge of a special vertex.
-template <class K>
+template <ConstructionKernel_3 K>
 void Loop_subdivider<K>::find_sector_sizes(const Level& lv) {
   if (!blz() || !any_special_) return;
   sector_faces_.assign(lv.topology.number_of_halfedges(), 0);
@@ -288,7 +289,7 @@ void Loop_subdivider<K>::find_sector_sizes(const Level& lv) {
 }
 
 // Vertex points: the vertex rule on the pre-summed ring or crease neighbours.
-template <class K>
+template <ConstructionKernel_3 K>
 void Loop_subdivider<K>::vertex_points(const Level& lv, const Acc* p, std::vector<Acc>& q) const {
   const Index nv = static_cast<Index>(lv.topology.number_of_vertices());
   for (Index v = 0; v < nv; ++v) {
@@ -315,7 +316,7 @@ void Loop_subdivider<K>::vertex_points(const Level& lv, const Acc* p, std::vecto
 // ring sum n e p + (e + 2 w) R (R its ring sum, e and w the standard end and
 // wing weights): no accumulation. The others (darts; with BLZ, ends of
 // modified edges) sum their edge points explicitly.
-template <class K>
+template <ConstructionKernel_3 K>
 void Loop_subdivider<K>::mark_explicit_rings(const Level& lv) {
   const Mesh_topology& t = lv.topology;
   const Loop_features& f = lv.features;
@@ -336,7 +337,7 @@ void Loop_subdivider<K>::mark_explicit_rings(const Level& lv) {
 
 // Edge points: the edge rule with equal weights factored out (ends and wings
 // of a standard edge are summed first).
-template <class K>
+template <ConstructionKernel_3 K>
 void Loop_subdivider<K>::edge_points(const Level& lv, const Acc* p, std::vector<Acc>& q, bool to_limit) {
   const Mesh_topology& t = lv.topology;
   const Loop_features& f = lv.features;
@@ -368,7 +369,7 @@ void Loop_subdivider<K>::edge_points(const Level& lv, const Acc* p, std::vector<
 
 // The four children of every face (with to_limit, the per-face sums of the
 // new vertices).
-template <class K>
+template <ConstructionKernel_3 K>
 void Loop_subdivider<K>::child_faces(const Mesh& m, const Level& lv, const std::vector<Acc>& q, bool to_limit,
                                      Mesh& out) {
   const Mesh_topology& t = lv.topology;
@@ -387,7 +388,7 @@ void Loop_subdivider<K>::child_faces(const Mesh& m, const Level& lv, const std::
 }
 
 // Each tagged crease (a, b) becomes (a, m), (m, b); corner tags are kept.
-template <class K>
+template <ConstructionKernel_3 K>
 void Loop_subdivider<K>::child_tags(const Mesh& m, const Level& lv, Mesh& out) {
   if (m.tags.empty()) return;
   const Index nv = static_cast<Index>(m.vertices.size()), ne = static_cast<Index>(lv.topology.number_of_edges());
@@ -406,7 +407,7 @@ void Loop_subdivider<K>::child_tags(const Mesh& m, const Level& lv, Mesh& out) {
 // edge (smooth, valence 6) between faces f and g: (1 - 6 chi) m + chi (a' +
 // b' + wings), and the wings are the face sums of f and g minus m twice. A
 // new vertex of a crease edge: the crease limit rule on the moved ends.
-template <class K>
+template <ConstructionKernel_3 K>
 void Loop_subdivider<K>::limit_of_new_vertices(const Level& lv, std::vector<Acc>& q) {
   const Mesh_topology& t = lv.topology;
   const Index nv = static_cast<Index>(t.number_of_vertices()), ne = static_cast<Index>(t.number_of_edges());
@@ -433,7 +434,7 @@ void Loop_subdivider<K>::limit_of_new_vertices(const Level& lv, std::vector<Acc>
 // (see mark_explicit_rings); a crease vertex's refined crease neighbours are
 // the crease edge rule's (p + p_c) / 2, so the crease limit rule gives
 // neighbour * p (the two halves) + neighbour / 2 * the crease-neighbour sum.
-template <class K>
+template <ConstructionKernel_3 K>
 void Loop_subdivider<K>::limit_of_old_vertices(const Level& lv, const Acc* p, std::vector<Acc>& q) {
   const Index nv = static_cast<Index>(lv.topology.number_of_vertices());
   const auto no_sector = [](int) -> Index { return 0; };
@@ -470,7 +471,7 @@ void Loop_subdivider<K>::limit_of_old_vertices(const Level& lv, const Acc* p, st
 /// Refines `m` `levels` times with Loop's rules under kernel K (default:
 /// Default_loop_kernel of the point type). See Loop_subdivider for the
 /// requirements, errors and output numbering.
-template <class K = void, class P>
+template <KernelOrDefault K = void, class P>
 Triangle_mesh<P> loop_subdivide(const Triangle_mesh<P>& m, unsigned levels,
                                 const Loop_options& options = {}) {
   using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_loop_kernel<P>::type, K>;
@@ -479,7 +480,7 @@ Triangle_mesh<P> loop_subdivide(const Triangle_mesh<P>& m, unsigned levels,
 
 /// The limit mesh of `m` at level `levels` (refine, then push every vertex to
 /// its limit position; thesis Sec. 5.2).
-template <class K = void, class P>
+template <KernelOrDefault K = void, class P>
 Triangle_mesh<P> loop_limit_mesh(const Triangle_mesh<P>& m, unsigned levels,
                                  const Loop_options& options = {}) {
   using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_loop_kernel<P>::type, K>;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/number_traits.h"
 
@@ -61,7 +62,7 @@ struct Loop_options {
 /// whatever beta is used. cos_2pi_n(n) = cos(2 pi / n), from which the tangent
 /// masks are built (loop_masks.h).
 /// Accessors taking a valence require reserve(n) first (O(1) then).
-template <class K>
+template <ConstructionKernel_3 K>
 class Loop_weights {
  public:
   using FT = typename K::FT;

@@ -47,6 +47,7 @@
 #include "relgeo/core/interval.h"
 #include "relgeo/core/mpfr_number.h"
 #include "relgeo/core/rounding.h"
+#include "relgeo/kernel/concepts.h"
 
 namespace relgeo {
 
@@ -194,7 +195,7 @@ struct Loop_number_traits<Mpfr_number<B>> {
 
 /// The per-kernel hook: by default the number traits of the kernel's FT.
 /// Specialise it to give one kernel a different policy than its number type.
-template <class K>
+template <ConstructionKernel_3 K>
 struct Loop_kernel_number_traits : Loop_number_traits<typename K::FT> {};
 
 }  // namespace relgeo

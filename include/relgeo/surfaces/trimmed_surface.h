@@ -26,6 +26,7 @@
 
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/core/floating_point.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/point.h"
 #include "relgeo/surfaces/nurbs_curve.h"
 #include "relgeo/surfaces/nurbs_surface.h"
@@ -164,7 +165,7 @@ class Trimmed_surface {
   /// winding number with K's certified orientation_2: `uncertain` only when
   /// K cannot decide a side test the answer depends on.
   /// \tparam K a relgeo kernel (OrientationKernel_2).
-  template <class K>
+  template <OrientationKernel_2 K>
   Domain_location locate(const Point_2<double>& p, const K& k = K{}) const {
     int winding = 0;
     for (const auto& loop : polygon_) {
@@ -178,7 +179,7 @@ class Trimmed_surface {
 
   /// Winding number of the closed polygon `loop` around p (on_boundary_code
   /// when p lies on it; empty when K cannot decide).
-  template <class K>
+  template <OrientationKernel_2 K>
   static std::optional<int> winding_number(const std::vector<Point_2<double>>& loop, const Point_2<double>& p,
                                            const K& k) {
     const auto orient = k.orientation_2_object();

@@ -98,7 +98,7 @@ Subdivision_result run_subdivision_with(const Mesh_double& input, const Subdivis
   m.tags = input.tags;
 
   internal::Stopwatch clock;
-  Loop_subdivider<K> subdivider(rq.options, kernel);
+  Loop_subdivider<K> subdivider(rq.options);
   const Triangle_mesh<P> R = subdivider.refine(m, rq.levels);
   const Triangle_mesh<P> L = subdivider.limit_mesh(m, rq.levels);
   res.time_subdivision = clock.elapsed();
@@ -125,7 +125,7 @@ Subdivision_result run_subdivision_with(const Mesh_double& input, const Subdivis
 
   // Sampling: distances of the refined and the limit mesh to the limit surface.
   clock.restart();
-  const Loop_limit_surface<K> surface(R, rq.options, kernel);
+  const Loop_limit_surface<K> surface(R, rq.options);
   const std::size_t nf = R.faces.size();
   for (Index f = 0; f < nf; ++f) ++res.patch_kinds[int(surface.patch_kind(f))];
   const auto grid = rq.samples > 0 ? dyadic_samples(rq.samples) : std::vector<std::pair<double, double>>{};
@@ -154,7 +154,7 @@ Subdivision_result run_subdivision_with(const Mesh_double& input, const Subdivis
   clock.restart();
   Loop_bound_options bo;
   if (rq.small_bounds) bo = Loop_bound_options{.irregular_depth = 2, .regular_depth = 1, .universal_depth = 3};
-  const Loop_limit_mesh_bounds<K> b = Loop_error_bounds<K>(rq.options, bo, kernel).compute(m, rq.levels);
+  const Loop_limit_mesh_bounds<K> b = Loop_error_bounds<K>(rq.options, bo).compute(m, rq.levels);
   res.time_bounds = clock.elapsed();
   const double tol = 1e-13 * (1 + res.mesh_size);  // rounding of the double sample heights
   const auto summarise = [&](const std::string& name, auto&& bound_of, bool is_bound) {

@@ -34,9 +34,12 @@ struct Sign_tally {
     if (!is_certain(exact)) throw Precondition_violation("Sign_tally::add: exact sign is uncertain");
     ++cases;
     if (answer == exact) ++correct;
-    else if (answer == Certified_sign::uncertain) ++uncertain;
-    else if (answer == Certified_sign::zero) (exact == Certified_sign::positive ? plus_to_zero : minus_to_zero)++;
-    else if (exact == Certified_sign::zero) ++zero_to_sign;
+    else if (!is_certain(answer))
+      ++uncertain;
+    else if (certainly(answer, Certified_sign::zero))
+      (certainly(exact, Certified_sign::positive) ? plus_to_zero : minus_to_zero)++;
+    else if (certainly(exact, Certified_sign::zero))
+      ++zero_to_sign;
     else ++inversions;
   }
   Sign_tally& operator+=(const Sign_tally& o) {

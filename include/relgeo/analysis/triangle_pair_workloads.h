@@ -69,8 +69,9 @@ inline double weight(std::mt19937_64& g, int eighths = 16) {
 inline bool is_degenerate(const Triangle_coordinates& t) {
   const Filtered_exact_kernel k;
   const auto p = k.construct_point_3_object();
-  return k.coplanar_orientation_3_object()(p(t[0][0], t[0][1], t[0][2]), p(t[1][0], t[1][1], t[1][2]),
-                                           p(t[2][0], t[2][1], t[2][2])) == Certified_sign::zero;
+  return certainly(k.coplanar_orientation_3_object()(p(t[0][0], t[0][1], t[0][2]), p(t[1][0], t[1][1], t[1][2]),
+                                                     p(t[2][0], t[2][1], t[2][2])),
+                   Certified_sign::zero);
 }
 
 }  // namespace internal_workloads

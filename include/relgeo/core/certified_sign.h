@@ -62,6 +62,16 @@ Stream& operator<<(Stream& os, Certified_sign s) {
   return os;
 }
 
+// The idiom for testing an answer: every test says how it treats doubt.
+// `certainly(s, v)` where an action needs the sign to be v for sure,
+// `possibly(s, v)` where it must also happen when the kernel does not know,
+// `is_certain(s)` for the doubt itself. relgeo does not compare a sign with
+// `==` or `!=` outside this header (`s != v` quietly counts `uncertain` as
+// "not v"): scripts/sign_comparisons.py, run by the tests, lists any such
+// comparison and prints none. Where an algorithm needs a definite answer it
+// tests is_certain first and reports the doubt as a failure (the hulls' sort,
+// the Boolean's `undecided` pairs) or throws.
+
 /// `certainly(s, v)`: the kernel has decided that the sign is v.
 constexpr bool certainly(Certified_sign s, Certified_sign v) noexcept { return s == v; }
 /// `possibly(s, v)`: the sign may be v (it is v, or the kernel does not know).

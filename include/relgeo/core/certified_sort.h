@@ -26,7 +26,7 @@ bool certified_sort(It first, It last, Compare compare, bool stable = false) {
   const auto less = [&compare](const auto& a, const auto& b) {
     const Certified_sign s = compare(a, b);
     if (!is_certain(s)) throw Undecided{};
-    return s == Certified_sign::negative;
+    return certainly(s, Certified_sign::negative);
   };
   try {
     if (stable) std::stable_sort(first, last, less);

@@ -97,7 +97,7 @@ inline bool is_ccw_strictly_convex_polygon(std::span<const Point_2<double>> poly
     const Point_2<double>& a = poly[(i + h - 1) % h];
     const Point_2<double>& b = poly[i];
     const Point_2<double>& c = poly[(i + 1) % h];
-    if (internal::exact_orientation(a, b, c) != Certified_sign::positive) return false;
+    if (!certainly(internal::exact_orientation(a, b, c), Certified_sign::positive)) return false;
     local_minima += internal::lexicographically_less(b, a) && internal::lexicographically_less(b, c);
   }
   return local_minima == 1;
@@ -116,7 +116,7 @@ inline Polygon_side locate(std::span<const Point_2<double>> poly, const Point_2<
   if (h <= 2) internal::require_finite(poly, "locate");
   if (h == 1) return poly[0] == p ? Polygon_side::boundary : Polygon_side::outside;
   if (h == 2) {
-    if (exact_orientation(poly[0], poly[1], p) != Certified_sign::zero) return Polygon_side::outside;
+    if (!certainly(exact_orientation(poly[0], poly[1], p), Certified_sign::zero)) return Polygon_side::outside;
     const bool between = std::min(poly[0].x, poly[1].x) <= p.x && p.x <= std::max(poly[0].x, poly[1].x) &&
                          std::min(poly[0].y, poly[1].y) <= p.y && p.y <= std::max(poly[0].y, poly[1].y);
     return between ? Polygon_side::boundary : Polygon_side::outside;
@@ -124,17 +124,19 @@ inline Polygon_side locate(std::span<const Point_2<double>> poly, const Point_2<
   // Fan from poly[0]: find the wedge (poly[i], poly[i+1]) containing p.
   const Certified_sign first = exact_orientation(poly[0], poly[1], p);
   const Certified_sign last = exact_orientation(poly[0], poly[h - 1], p);
-  if (first == Certified_sign::negative || last == Certified_sign::positive) return Polygon_side::outside;
+  if (certainly(first, Certified_sign::negative) || certainly(last, Certified_sign::positive))
+    return Polygon_side::outside;
   std::size_t lo = 1, hi = h - 1;  // invariant: p left of or on poly0->poly[lo], right of or on poly0->poly[hi]
   while (hi - lo > 1) {
     const std::size_t mid = (lo + hi) / 2;
-    if (exact_orientation(poly[0], poly[mid], p) == Certified_sign::negative) hi = mid;
+    if (certainly(exact_orientation(poly[0], poly[mid], p), Certified_sign::negative))
+      hi = mid;
     else lo = mid;
   }
   const Certified_sign edge = exact_orientation(poly[lo], poly[hi], p);
-  if (edge == Certified_sign::negative) return Polygon_side::outside;
-  if (edge == Certified_sign::zero) return Polygon_side::boundary;
-  if ((lo == 1 && first == Certified_sign::zero) || (hi == h - 1 && last == Certified_sign::zero))
+  if (certainly(edge, Certified_sign::negative)) return Polygon_side::outside;
+  if (certainly(edge, Certified_sign::zero)) return Polygon_side::boundary;
+  if ((lo == 1 && certainly(first, Certified_sign::zero)) || (hi == h - 1 && certainly(last, Certified_sign::zero)))
     return Polygon_side::boundary;  // on the first or the last edge through poly[0]
   return Polygon_side::inside;
 }

@@ -58,10 +58,10 @@ Hull_result<typename K::Point_2> graham_fortune(std::span<const typename K::Poin
     for (std::size_t p = L + 1; p < R; ++p) {
       const Certified_sign side = orientation(sorted.point(L), sorted.point(R), sorted.point(p));
       ++r.predicate_calls;
-      r.uncertain_answers += (side == Certified_sign::uncertain);
-      if (side == Certified_sign::negative)
+      r.uncertain_answers += (!is_certain(side));
+      if (certainly(side, Certified_sign::negative))
         internal::extend_chain(sorted, p, orientation, Certified_sign::positive, chain, 0, r);
-      else if (side == Certified_sign::positive)
+      else if (certainly(side, Certified_sign::positive))
         internal::extend_chain(sorted, p, orientation, Certified_sign::negative, upper, 0, r);
     }
     internal::extend_chain(sorted, R, orientation, Certified_sign::positive, chain, 0, r);

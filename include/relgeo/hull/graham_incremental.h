@@ -23,7 +23,7 @@ void incremental_hull(std::span<const typename K::Point_2> points, const K& k, H
   auto orient = [&](std::size_t a, std::size_t b, std::size_t c) {
     const Certified_sign s = orientation(points[a], points[b], points[c]);
     ++r.predicate_calls;
-    r.uncertain_answers += (s == Certified_sign::uncertain);
+    r.uncertain_answers += (!is_certain(s));
     return s;
   };
   const std::size_t n = points.size();
@@ -32,10 +32,10 @@ void incremental_hull(std::span<const typename K::Point_2> points, const K& k, H
   // Seed triangle.
   std::size_t second = n, third = n;
   for (std::size_t i = 1; i < n && second == n; ++i)
-    if (compare(points[0], points[i]) != Certified_sign::zero) second = i;
+    if (!certainly(compare(points[0], points[i]), Certified_sign::zero)) second = i;
   for (std::size_t i = second + 1; second < n && i < n && third == n; ++i) {
     const Certified_sign s = orient(0, second, i);
-    if (s == Certified_sign::positive || s == Certified_sign::negative) third = i;
+    if (certainly(s, Certified_sign::positive) || certainly(s, Certified_sign::negative)) third = i;
   }
   if (third == n) {  // one distinct point, or (as far as K can tell) collinear
     const Sorted_input<K> sorted(points, k, &r.uncertain_answers);
@@ -56,7 +56,7 @@ void incremental_hull(std::span<const typename K::Point_2> points, const K& k, H
   std::vector<std::size_t> next(n, none), prev(n, none);
   std::size_t start = 0, hull_size = 3;
   auto link = [&](std::size_t a, std::size_t b) { next[a] = b, prev[b] = a; };
-  if (orient(0, second, third) == Certified_sign::positive) {
+  if (certainly(orient(0, second, third), Certified_sign::positive)) {
     link(0, second), link(second, third), link(third, 0);
   } else {
     link(0, third), link(third, second), link(second, 0);
@@ -65,18 +65,18 @@ void incremental_hull(std::span<const typename K::Point_2> points, const K& k, H
   auto insert = [&](std::size_t p) -> bool {  // false: non-termination detected
     // Locate: first edge (s, next s) that p sees.
     std::size_t s = start, scanned = 0;
-    while (orient(s, next[s], p) != Certified_sign::negative) {
+    while (!certainly(orient(s, next[s], p), Certified_sign::negative)) {
       s = next[s];
       if (++scanned >= hull_size) return true;  // inside (or on the boundary): discard
     }
     std::size_t t = next[s];
     // Walk forward while p sees (t, next t).
-    for (std::size_t steps = 0; orient(t, next[t], p) != Certified_sign::positive;) {
+    for (std::size_t steps = 0; !certainly(orient(t, next[t], p), Certified_sign::positive);) {
       t = next[t];
       if (++steps > hull_size || t == s) return false;
     }
     // Walk backward while p sees (prev s, s).
-    for (std::size_t steps = 0; orient(prev[s], s, p) != Certified_sign::positive;) {
+    for (std::size_t steps = 0; !certainly(orient(prev[s], s, p), Certified_sign::positive);) {
       s = prev[s];
       if (++steps > hull_size || s == t) return false;
     }

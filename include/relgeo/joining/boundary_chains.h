@@ -249,16 +249,16 @@ std::optional<bool> segments_intersect(const K& k, const Point_2<double>& a, con
   const auto A = pt(a.x, a.y), B = pt(b.x, b.y), C = pt(c.x, c.y), D = pt(d.x, d.y);
   const Certified_sign o1 = o(A, B, C), o2 = o(A, B, D), o3 = o(C, D, A), o4 = o(C, D, B);
   for (Certified_sign s : {o1, o2, o3, o4})
-    if (s == Certified_sign::uncertain) return std::nullopt;
+    if (!is_certain(s)) return std::nullopt;
   const auto sgn = [](Certified_sign s) { return to_int(s); };
   if (sgn(o1) * sgn(o2) < 0 && sgn(o3) * sgn(o4) < 0) return true;
   const auto on = [](const Point_2<double>& p, const Point_2<double>& q, const Point_2<double>& r) {  // r in box(p, q)
     return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y && r.y <= std::max(p.y, q.y);
   };
-  if (o1 == Certified_sign::zero && on(a, b, c)) return true;
-  if (o2 == Certified_sign::zero && on(a, b, d)) return true;
-  if (o3 == Certified_sign::zero && on(c, d, a)) return true;
-  if (o4 == Certified_sign::zero && on(c, d, b)) return true;
+  if (certainly(o1, Certified_sign::zero) && on(a, b, c)) return true;
+  if (certainly(o2, Certified_sign::zero) && on(a, b, d)) return true;
+  if (certainly(o3, Certified_sign::zero) && on(c, d, a)) return true;
+  if (certainly(o4, Certified_sign::zero) && on(c, d, b)) return true;
   return false;
 }
 

@@ -220,7 +220,8 @@ Central_mesh central_mesh(std::span<const Triangle> faces, std::span<const Point
   std::vector<Index> kept_id;
   for (Index f = 0; f < nf; ++f)
     if (c.keep[f]) {
-      if (internal::uv_orientation(k, uv[faces[f][0]], uv[faces[f][1]], uv[faces[f][2]]) != Certified_sign::positive)
+      if (!certainly(internal::uv_orientation(k, uv[faces[f][0]], uv[faces[f][1]], uv[faces[f][2]]),
+                     Certified_sign::positive))
         remove(f, c.removed_invalid);
       else kept_faces.push_back(faces[f]), kept_id.push_back(f);
     }

@@ -144,8 +144,10 @@ Orientation_report uv_orientations(std::span<const Triangle> faces, std::span<co
     for (Index v : t)
       if (v >= uv.size()) throw Invalid_input("uv_orientations: face " + std::to_string(f) + " has an index out of range");
     const Certified_sign s = internal::uv_orientation(k, uv[t[0]], uv[t[1]], uv[t[2]]);
-    if (s == Certified_sign::uncertain) ++r.undecided, r.undecided_faces.push_back(f);
-    else if (s == Certified_sign::zero) ++r.degenerate, r.degenerate_faces.push_back(f);
+    if (!is_certain(s))
+      ++r.undecided, r.undecided_faces.push_back(f);
+    else if (certainly(s, Certified_sign::zero))
+      ++r.degenerate, r.degenerate_faces.push_back(f);
     else if (s == expected) ++r.positive;
     else ++r.flipped, r.flipped_faces.push_back(f);
   }
@@ -178,12 +180,12 @@ Overlap_report uv_overlaps(std::span<const Triangle> faces, std::span<const Poin
       if (v >= uv.size()) throw Invalid_input("uv_overlaps: face " + std::to_string(f) + " has an index out of range");
     std::array<Point_2<double>, 3> c{uv[t[0]], uv[t[1]], uv[t[2]]};
     const Certified_sign s = internal::uv_orientation(k, c[0], c[1], c[2]);
-    if (s == Certified_sign::zero) continue;
-    if (s == Certified_sign::uncertain) {  // orientation unknown: cannot test it
+    if (certainly(s, Certified_sign::zero)) continue;
+    if (!is_certain(s)) {  // orientation unknown: cannot test it
       report.undecided.push_back({f, f});
       continue;
     }
-    if (s == Certified_sign::negative) std::swap(c[1], c[2]);
+    if (certainly(s, Certified_sign::negative)) std::swap(c[1], c[2]);
     tri.push_back(c), id.push_back(f);
     box.push_back({std::min({c[0].x, c[1].x, c[2].x}), std::min({c[0].y, c[1].y, c[2].y}),
                    std::max({c[0].x, c[1].x, c[2].x}), std::max({c[0].y, c[1].y, c[2].y})});
@@ -217,8 +219,10 @@ Overlap_report uv_overlaps(std::span<const Triangle> faces, std::span<const Poin
       bool all_out = true, edge_doubt = false;
       for (int c = 0; c < 3 && all_out; ++c) {
         const Certified_sign s = internal::uv_orientation(k, a[e], a[(e + 1) % 3], b[c]);
-        if (s == Certified_sign::positive) all_out = false;
-        else if (s == Certified_sign::uncertain) edge_doubt = true;
+        if (certainly(s, Certified_sign::positive))
+          all_out = false;
+        else if (!is_certain(s))
+          edge_doubt = true;
       }
       if (all_out && !edge_doubt) return Certified_sign::positive;
       if (all_out) doubt = true;
@@ -231,11 +235,12 @@ Overlap_report uv_overlaps(std::span<const Triangle> faces, std::span<const Poin
         const std::uint32_t i = bucket[a], j = bucket[b];
         if (box[i][2] < box[j][0] || box[j][2] < box[i][0] || box[i][3] < box[j][1] || box[j][3] < box[i][1]) continue;
         const Certified_sign s1 = separated_by_edges_of(tri[i], tri[j]);
-        if (s1 == Certified_sign::positive) continue;
+        if (certainly(s1, Certified_sign::positive)) continue;
         const Certified_sign s2 = separated_by_edges_of(tri[j], tri[i]);
-        if (s2 == Certified_sign::positive) continue;
+        if (certainly(s2, Certified_sign::positive)) continue;
         const std::pair<Index, Index> key{std::min(id[i], id[j]), std::max(id[i], id[j])};
-        if (s1 == Certified_sign::uncertain || s2 == Certified_sign::uncertain) report.undecided.push_back(key);
+        if (!is_certain(s1) || !is_certain(s2))
+          report.undecided.push_back(key);
         else report.overlapping.push_back(key);
       }
   const auto unique = [](std::vector<std::pair<Index, Index>>& v) {

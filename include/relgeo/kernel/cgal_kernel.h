@@ -194,8 +194,8 @@ class Cgal_kernel : public internal::Cgal_implicit_base<K> {
                               const Point_3& s) const {
       const Certified_sign pqr =
           guarded([&] { return from_cgal(typename K::Coplanar_orientation_3()(p, q, r)); }, p, q, r, s);
-      if (pqr == Certified_sign::uncertain) return pqr;
-      if (pqr == Certified_sign::zero)
+      if (!is_certain(pqr)) return pqr;
+      if (certainly(pqr, Certified_sign::zero))
         throw Precondition_violation("coplanar_orientation(p,q,r,s): p, q, r are collinear");
       return guarded([&] { return from_cgal(typename K::Coplanar_orientation_3()(p, q, r, s)); }, p, q, r, s);
     }

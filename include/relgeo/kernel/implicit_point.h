@@ -129,7 +129,7 @@ class Implicit_kernel_base {
                               const Implicit_point_3& r) const {
       for (int plane = 0; plane < 3; ++plane) {
         const Certified_sign o = in_plane(plane, p, q, r);
-        if (o != Certified_sign::zero || plane == 2) return o;
+        if (!certainly(o, Certified_sign::zero) || plane == 2) return o;
       }
       return Certified_sign::zero;  // unreachable
     }
@@ -138,8 +138,8 @@ class Implicit_kernel_base {
                               const Implicit_point_3& s) const {
       for (int plane = 0; plane < 3; ++plane) {
         const Certified_sign o = in_plane(plane, p, q, r);
-        if (o == Certified_sign::uncertain) return o;
-        if (o != Certified_sign::zero) return o * in_plane(plane, p, q, s);
+        if (!is_certain(o)) return o;
+        if (!certainly(o, Certified_sign::zero)) return o * in_plane(plane, p, q, s);
       }
       throw Precondition_violation("implicit coplanar_orientation(p,q,r,s): p, q, r are collinear");
     }

@@ -22,7 +22,7 @@ namespace internal {
 /// v == 0 exactly (a scalar of the linear area is never an interval).
 template <class S>
 bool is_zero(const S& v) {
-  return certified_sign(v) == Certified_sign::zero;
+  return certainly(certified_sign(v), Certified_sign::zero);
 }
 }  // namespace internal
 

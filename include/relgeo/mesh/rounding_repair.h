@@ -153,8 +153,9 @@ class Rounding_repair {
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
     const auto orient = k_.orientation_2_object();
     for (int plane = 0; plane < 3; ++plane)
-      if (orient(project_to_plane<K>(point_[t[0]], plane), project_to_plane<K>(point_[t[1]], plane),
-                 project_to_plane<K>(point_[t[2]], plane)) != Certified_sign::zero)
+      if (!certainly(orient(project_to_plane<K>(point_[t[0]], plane), project_to_plane<K>(point_[t[1]], plane),
+                            project_to_plane<K>(point_[t[2]], plane)),
+                     Certified_sign::zero))
         return false;  // the filtered exact kernel decides every sign
     return true;
   }

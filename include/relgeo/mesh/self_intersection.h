@@ -123,7 +123,7 @@ inline std::vector<unsigned char> degenerate_face_flags(const std::vector<std::a
   for (std::size_t f = 0; f < projected.size(); ++f) {
     bool strict = false, uncertain = false;
     for (Certified_sign s : projected[f]) {
-      strict = strict || s == Certified_sign::positive || s == Certified_sign::negative;
+      strict = strict || certainly(s, Certified_sign::positive) || certainly(s, Certified_sign::negative);
       uncertain = uncertain || !is_certain(s);
     }
     flag[f] = strict ? 0 : uncertain ? 2 : 1;

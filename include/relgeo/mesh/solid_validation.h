@@ -299,8 +299,8 @@ void report_orientation(const K& k, const Triangle_mesh<P>& m, const Points& poi
              o.max_listed);
       continue;
     }
-    const bool shell = *winding[c] == 0 && s == Certified_sign::positive;
-    const bool cavity = *winding[c] == 1 && s == Certified_sign::negative;
+    const bool shell = *winding[c] == 0 && certainly(s, Certified_sign::positive);
+    const bool cavity = *winding[c] == 1 && certainly(s, Certified_sign::negative);
     if (!shell && !cavity)
       record(r.outward_oriented, {Mesh_defect::misoriented_component, {comps.first_face[c], static_cast<Index>(c)}},
              o.max_listed);

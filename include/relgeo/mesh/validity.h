@@ -158,8 +158,10 @@ Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& opti
         else return internal::Point_access<KP>::make(A::x(p), A::y(p), A::z(p));
       };
       const Certified_sign s = collinear(cv(a), cv(b), cv(c));
-      if (s == Certified_sign::zero) r.issues.push_back({Mesh_defect::collinear_face, {f, invalid_index}});
-      else if (s == Certified_sign::uncertain) r.issues.push_back({Mesh_defect::undecided, {f, invalid_index}});
+      if (certainly(s, Certified_sign::zero))
+        r.issues.push_back({Mesh_defect::collinear_face, {f, invalid_index}});
+      else if (!is_certain(s))
+        r.issues.push_back({Mesh_defect::undecided, {f, invalid_index}});
     }
   }
   return r;

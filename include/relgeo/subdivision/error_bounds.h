@@ -282,7 +282,7 @@ class Loop_error_bounds {
     const double len = std::sqrt(nearest_double(fr.nn));
     r.normal_length[g] = len;
     const Certified_sign s = certified_sign(fr.nn);
-    if (!(s == Certified_sign::positive || s == Certified_sign::negative) || !(len > 0)) {
+    if (!(certainly(s, Certified_sign::positive) || certainly(s, Certified_sign::negative)) || !(len > 0)) {
       r.degenerate[g] = 1;
       return false;
     }
@@ -388,10 +388,10 @@ class Loop_error_bounds {
         return internal::Affine_2<FT>{FT(-a.tau), FT(-a.rho), FT(-a.sigma)};
       };
       const Certified_sign ks = certified_sign(kappa);
-      if (ks == Certified_sign::positive) {
+      if (certainly(ks, Certified_sign::positive)) {
         upper.push_back(bound_from(gp));
         lower.push_back(negate(bound_from(gm)));
-      } else if (ks == Certified_sign::negative) {
+      } else if (certainly(ks, Certified_sign::negative)) {
         upper.push_back(bound_from(gm));
         lower.push_back(negate(bound_from(gp)));
       }

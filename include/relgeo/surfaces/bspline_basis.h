@@ -52,15 +52,15 @@ void check_knot_vector(std::span<const FT> knots, int p, std::size_t count, cons
     if constexpr (is_interval_v<FT>)
       if (!knots[i].is_point())
         throw Invalid_spline(what + ": knot " + std::to_string(i) + " is not a point interval (convert from doubles)");
-    if (i > 0 && certified_sign(FT(knots[i] - knots[i - 1])) == Certified_sign::negative)
+    if (i > 0 && certainly(certified_sign(FT(knots[i] - knots[i - 1])), Certified_sign::negative))
       throw Invalid_spline(what + ": knots decrease at index " + std::to_string(i));
   }
-  if (certified_sign(FT(knots[count] - knots[p])) != Certified_sign::positive)
+  if (!certainly(certified_sign(FT(knots[count] - knots[p])), Certified_sign::positive))
     throw Invalid_spline(what + ": empty parameter domain [U[p], U[n]]");
   // Interior multiplicity: a run of equal knots strictly inside the domain.
   std::size_t run = 1;
   for (std::size_t i = 1; i < knots.size(); ++i) {
-    run = certified_sign(FT(knots[i] - knots[i - 1])) == Certified_sign::zero ? run + 1 : 1;
+    run = certainly(certified_sign(FT(knots[i] - knots[i - 1])), Certified_sign::zero) ? run + 1 : 1;
     const bool interior = i > static_cast<std::size_t>(p) && i < count;
     if (interior && run > static_cast<std::size_t>(p))
       throw Invalid_spline(what + ": interior knot of multiplicity " + std::to_string(run) + " > degree " +

@@ -200,10 +200,12 @@ class Trimmed_surface {
       // predicates could not certify the zero orientation of (a, b, a)).
       if ((p.x == a.x && p.y == a.y) || (p.x == b.x && p.y == b.y)) return on_boundary_code;
       const Certified_sign o = orient(pt(a.x, a.y), pt(b.x, b.y), kp);
-      if (o == Certified_sign::uncertain) return std::nullopt;
-      if (o == Certified_sign::zero && in_x_range && in_y_range) return on_boundary_code;
-      if (a_below && !b_below && o == Certified_sign::positive) ++w;       // upward crossing, p left of ab
-      else if (!a_below && b_below && o == Certified_sign::negative) --w;  // downward crossing, p right of ab
+      if (!is_certain(o)) return std::nullopt;
+      if (certainly(o, Certified_sign::zero) && in_x_range && in_y_range) return on_boundary_code;
+      if (a_below && !b_below && certainly(o, Certified_sign::positive))
+        ++w;  // upward crossing, p left of ab
+      else if (!a_below && b_below && certainly(o, Certified_sign::negative))
+        --w;  // downward crossing, p right of ab
     }
     return w;
   }

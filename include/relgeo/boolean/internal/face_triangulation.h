@@ -89,7 +89,8 @@ class Face_triangulator {
   Face_triangulation run(const Face_constraints& f, int axis) {
     reset(f, axis);
     Face_triangulation out;
-    if (!is_certain(sigma_) || sigma_ == Certified_sign::zero) return fail(out, "the face is degenerate in its projection");
+    if (!is_certain(sigma_) || certainly(sigma_, Certified_sign::zero))
+      return fail(out, "the face is degenerate in its projection");
     if (!insert_edge_points(f)) return fail(out, failure_);
     for (Index p : f.interior_points)
       if (!insert_interior_point(local(p))) return fail(out, failure_);
@@ -182,7 +183,7 @@ class Face_triangulator {
   // Orientation in the face's own orientation (positive: counter-clockwise).
   Certified_sign orient(int a, int b, int c) const {
     const Certified_sign o = orient2_(points_[global_[a]], points_[global_[b]], points_[global_[c]], axis_);
-    return sigma_ == Certified_sign::negative ? -o : o;
+    return certainly(sigma_, Certified_sign::negative) ? -o : o;
   }
 
   // ---- points on the face's edges -------------------------------------------
@@ -195,10 +196,10 @@ class Face_triangulator {
       // monotonically, increasing or decreasing with the direction.
       const Certified_sign dir = compare_(points_[from], points_[to]);
       if (!is_certain(dir)) return failed("undecided direction of a face edge");
-      if (dir == Certified_sign::zero) return failed("a face edge is degenerate");
+      if (certainly(dir, Certified_sign::zero)) return failed("a face edge is degenerate");
       const auto along_edge = [&](Index a, Index b) {
         const Certified_sign c = compare_(points_[a], points_[b]);
-        return dir == Certified_sign::negative ? c : -c;
+        return certainly(dir, Certified_sign::negative) ? c : -c;
       };
       if (!certified_sort(pts.begin(), pts.end(), along_edge)) return failed("undecided order of points on an edge");
       pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
@@ -272,13 +273,14 @@ class Face_triangulator {
       for (int k : order) {
         s[k] = orient(t.v[k], t.v[(k + 1) % 3], p);
         if (!is_certain(s[k])) return failed("undecided location of a point in a face");
-        if ((outside = s[k] == Certified_sign::negative)) break;
+        if ((outside = certainly(s[k], Certified_sign::negative))) break;
       }
       if (outside) continue;
-      const int zeros = (s[0] == Certified_sign::zero) + (s[1] == Certified_sign::zero) + (s[2] == Certified_sign::zero);
+      const int zeros = (certainly(s[0], Certified_sign::zero)) + (certainly(s[1], Certified_sign::zero)) +
+                        (certainly(s[2], Certified_sign::zero));
       if (zeros >= 2) return true;  // on a vertex: the point is already there (equal points share an index)
       if (zeros == 1) {
-        const int k = s[0] == Certified_sign::zero ? 0 : (s[1] == Certified_sign::zero ? 1 : 2);
+        const int k = certainly(s[0], Certified_sign::zero) ? 0 : (certainly(s[1], Certified_sign::zero) ? 1 : 2);
         if (tris_[i].nb[k] == -1) return failed("an interior point lies on the face's boundary");
         split_edge_of(static_cast<int>(i), k, p);
         return true;
@@ -314,7 +316,7 @@ class Face_triangulator {
       if (p == a || p == b || apart(std::array<int, 2>{a, b}, std::array<int, 1>{p})) continue;
       const Certified_sign o = side(a, b, p);
       if (!is_certain(o)) return failed("undecided position of a point against a segment");
-      if (o != Certified_sign::zero) continue;
+      if (!certainly(o, Certified_sign::zero)) continue;
       const int between = strictly_between(a, b, p);
       if (between < 0) return failed("undecided order of points on a segment");
       if (between == 1) return insert_segment(a, p) && insert_segment(p, b);
@@ -361,7 +363,7 @@ class Face_triangulator {
 
   // The side of p against ab (kept in side_ for the segment being inserted).
   Certified_sign side(int a, int b, int p) {
-    if (side_[p] == Certified_sign::uncertain) side_[p] = orient(a, b, p);
+    if (!is_certain(side_[p])) side_[p] = orient(a, b, p);
     return side_[p];
   }
 
@@ -477,7 +479,7 @@ class Face_triangulator {
     const Certified_sign ap = compare_(points_[global_[a]], points_[global_[p]]);
     const Certified_sign pb = compare_(points_[global_[p]], points_[global_[b]]);
     if (!is_certain(ap) || !is_certain(pb)) return -1;
-    return ap != Certified_sign::zero && ap == pb ? 1 : 0;
+    return !certainly(ap, Certified_sign::zero) && ap == pb ? 1 : 0;
   }
 
   // 1 if segment xy crosses segment ab in both interiors, 0 if not, -1
@@ -492,13 +494,13 @@ class Face_triangulator {
       failed("undecided crossing of a constraint");
       return -1;
     }
-    if (sa * sb != Certified_sign::negative) return 0;
+    if (!certainly(sa * sb, Certified_sign::negative)) return 0;
     const Certified_sign sx = side(a, b, x), sy = is_certain(sx) ? side(a, b, y) : sx;
     if (!is_certain(sx) || !is_certain(sy)) {
       failed("undecided position of a point against a segment");
       return -1;
     }
-    return sx * sy == Certified_sign::negative ? 1 : 0;
+    return certainly(sx * sy, Certified_sign::negative) ? 1 : 0;
   }
 
   // Flips the edge k of triangle ti when its quadrilateral is strictly convex:
@@ -516,7 +518,7 @@ class Face_triangulator {
     }
     // The quadrilateral x, q, y, p (counter-clockwise) is strictly convex when
     // its diagonal pq separates y (left) from x (right).
-    if (s1 != Certified_sign::positive || s2 != Certified_sign::negative) return 0;
+    if (!certainly(s1, Certified_sign::positive) || !certainly(s2, Certified_sign::negative)) return 0;
     const int n_yp = t.nb[(k + 1) % 3], n_px = t.nb[(k + 2) % 3];
     const int n_xq = u.nb[(j + 1) % 3], n_qy = u.nb[(j + 2) % 3];
     tris_[ti].v = {p, x, q};

@@ -24,7 +24,7 @@ void extend_chain(const Sorted& input, std::size_t r, const Orientation& orienta
     const Certified_sign s =
         orientation(input.point(chain[chain.size() - 2]), input.point(chain.back()), input.point(r));
     ++stats.predicate_calls;
-    stats.uncertain_answers += (s == Certified_sign::uncertain);
+    stats.uncertain_answers += (!is_certain(s));
     if (s == keep) break;
     chain.pop_back();
   }

@@ -129,7 +129,8 @@ void rotate_to_smallest(std::vector<std::size_t>& cycle, std::span<const typenam
   std::size_t best = 0;
   for (std::size_t i = 1; i < cycle.size(); ++i) {
     const Certified_sign s = compare(points[cycle[i]], points[cycle[best]]);
-    if (s == Certified_sign::negative || (s == Certified_sign::zero && cycle[i] < cycle[best])) best = i;
+    if (certainly(s, Certified_sign::negative) || (certainly(s, Certified_sign::zero) && cycle[i] < cycle[best]))
+      best = i;
   }
   std::rotate(cycle.begin(), cycle.begin() + static_cast<std::ptrdiff_t>(best), cycle.end());
 }

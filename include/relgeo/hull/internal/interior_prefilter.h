@@ -82,7 +82,8 @@ std::optional<Point_bitmap> interior_prefilter(std::span<const Point> points, co
     auto certainly_inside = [&](const Point& p) {
       for (std::size_t e = 0; e < polygon.size(); ++e) {
         ++stats.predicate_calls;
-        if (orientation(polygon[e], polygon[(e + 1) % polygon.size()], p) != Certified_sign::positive) return false;
+        if (!certainly(orientation(polygon[e], polygon[(e + 1) % polygon.size()], p), Certified_sign::positive))
+          return false;
       }
       return true;
     };

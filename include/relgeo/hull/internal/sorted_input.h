@@ -71,7 +71,7 @@ class Sorted_input {
       for (std::size_t j = 0; decided && j < order_.size(); ++j) {
         const Certified_sign s = kept == 0 ? Certified_sign::positive : by_point(order_[kept - 1], order_[j]);
         decided = is_certain(s);
-        if (s != Certified_sign::zero) order_[kept++] = order_[j];
+        if (!certainly(s, Certified_sign::zero)) order_[kept++] = order_[j];
       }
       order_.resize(kept);
       if (!decided) {

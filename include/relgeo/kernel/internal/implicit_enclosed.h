@@ -142,7 +142,7 @@ struct Enclosed_implicit_policy {
   // interval W of infinite inputs can look certainly nonzero).
   static std::optional<Point> checked(const Homogeneous_3<NT>& h, Implicit_point_kind kind) {
     const Certified_sign w = certified_sign_of(h.w);
-    if (w != Certified_sign::positive && w != Certified_sign::negative) return std::nullopt;
+    if (!certainly(w, Certified_sign::positive) && !certainly(w, Certified_sign::negative)) return std::nullopt;
     return Point{h, kind};
   }
 };

@@ -85,7 +85,7 @@ template <class NT>
 Certified_sign compare_xyz_sign(const Homogeneous_3<NT>& a, const Homogeneous_3<NT>& b) {
   for (int axis = 0; axis < 3; ++axis) {
     const Certified_sign s = compare_coordinate_sign(a, b, axis);
-    if (s != Certified_sign::zero) return s;
+    if (!certainly(s, Certified_sign::zero)) return s;
   }
   return Certified_sign::zero;
 }

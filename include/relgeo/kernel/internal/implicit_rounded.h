@@ -41,8 +41,8 @@ struct Rounded_implicit_policy {
   }
   static Certified_sign compare_xyz(const Point& a, const Point& b) {
     Certified_sign s = K::compare_ft(a.point.x, b.point.x);
-    if (s == Certified_sign::zero) s = K::compare_ft(a.point.y, b.point.y);
-    if (s == Certified_sign::zero) s = K::compare_ft(a.point.z, b.point.z);
+    if (certainly(s, Certified_sign::zero)) s = K::compare_ft(a.point.y, b.point.y);
+    if (certainly(s, Certified_sign::zero)) s = K::compare_ft(a.point.z, b.point.z);
     return s;
   }
   /// Exact kernels know the error of rounding their point; naive ones do not
@@ -71,7 +71,7 @@ struct Rounded_implicit_policy {
   }
   static std::optional<Point> divided(const Homogeneous_3<FT>& h, Implicit_point_kind kind) {
     const Certified_sign w = K::compare_ft(h.w, FT(0));
-    if (w != Certified_sign::positive && w != Certified_sign::negative) return std::nullopt;
+    if (!certainly(w, Certified_sign::positive) && !certainly(w, Certified_sign::negative)) return std::nullopt;
     return Point{Point_3<FT>{FT(h.x / h.w), FT(h.y / h.w), FT(h.z / h.w)}, kind};
   }
 };

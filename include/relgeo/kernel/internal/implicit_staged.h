@@ -312,13 +312,13 @@ struct Staged_implicit_policy {
       else r.filter = homogeneous_coordinates<Filtered_value<double>>(r, [](double x) { return Filtered_value<double>(x); });
       return certified_sign_of(r.filter.w);
     });
-    if (w == Certified_sign::positive || w == Certified_sign::negative) [[likely]]
+    if (certainly(w, Certified_sign::positive) || certainly(w, Certified_sign::negative)) [[likely]]
       return r;
-    if (w == Certified_sign::zero) return std::nullopt;
+    if (certainly(w, Certified_sign::zero)) return std::nullopt;
     const Certified_sign exact = staged_sign(std::array<const Point*, 1>{&r}, [](const auto& h) {
       return certified_sign_of(h[0]->w);
     });
-    if (exact == Certified_sign::zero) return std::nullopt;
+    if (certainly(exact, Certified_sign::zero)) return std::nullopt;
     return r;
   }
 };

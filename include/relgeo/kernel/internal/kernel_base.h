@@ -58,7 +58,7 @@ class Kernel_base {
     Certified_sign operator()(const Point_2& p, const Point_2& q) const {
       if (refuses(p) || refuses(q)) return Certified_sign::uncertain;
       const Certified_sign sx = Derived::compare_ft(p.x, q.x);
-      return sx == Certified_sign::zero ? Derived::compare_ft(p.y, q.y) : sx;
+      return certainly(sx, Certified_sign::zero) ? Derived::compare_ft(p.y, q.y) : sx;
     }
   };
 
@@ -76,7 +76,7 @@ class Kernel_base {
       if (refuses(p) || refuses(q) || refuses(r)) return Certified_sign::uncertain;
       for (int plane = 0; plane < 3; ++plane) {
         const Certified_sign o = orient(plane, p, q, r);
-        if (o != Certified_sign::zero || plane == 2) return o;
+        if (!certainly(o, Certified_sign::zero) || plane == 2) return o;
       }
       return Certified_sign::zero;  // unreachable
     }
@@ -85,8 +85,8 @@ class Kernel_base {
       if (refuses(p) || refuses(q) || refuses(r) || refuses(s)) return Certified_sign::uncertain;
       for (int plane = 0; plane < 3; ++plane) {
         const Certified_sign o = orient(plane, p, q, r);
-        if (o == Certified_sign::uncertain) return o;
-        if (o != Certified_sign::zero) return o * orient(plane, p, q, s);
+        if (!is_certain(o)) return o;
+        if (!certainly(o, Certified_sign::zero)) return o * orient(plane, p, q, s);
       }
       throw Precondition_violation("coplanar_orientation(p,q,r,s): p, q, r are collinear");
     }

@@ -73,7 +73,9 @@ std::vector<std::array<Certified_sign, 3>> projected_orientations(const K& k, co
     for (int plane = 0; plane < 3; ++plane) {
       s[f][plane] = orient(project_to_plane<K>(point[t[0]], plane), project_to_plane<K>(point[t[1]], plane),
                            project_to_plane<K>(point[t[2]], plane));
-      if (!every_plane && (s[f][plane] == Certified_sign::positive || s[f][plane] == Certified_sign::negative)) break;
+      if (!every_plane &&
+          (certainly(s[f][plane], Certified_sign::positive) || certainly(s[f][plane], Certified_sign::negative)))
+        break;
     }
   }
   return s;
@@ -108,8 +110,8 @@ std::vector<unsigned char> embedded_star_flags(const K& k, const Points& point, 
     unsigned char bits = 0;
     if (!skip[f])
       for (int plane = 0; plane < 3; ++plane) {
-        if (projected[f][plane] == Certified_sign::positive) bits |= static_cast<unsigned char>(1u << plane);
-        if (projected[f][plane] == Certified_sign::negative) bits |= static_cast<unsigned char>(8u << plane);
+        if (certainly(projected[f][plane], Certified_sign::positive)) bits |= static_cast<unsigned char>(1u << plane);
+        if (certainly(projected[f][plane], Certified_sign::negative)) bits |= static_cast<unsigned char>(8u << plane);
       }
     for (Index v : faces[f]) same[v] &= bits;
   }
@@ -134,7 +136,7 @@ std::vector<unsigned char> embedded_star_flags(const K& k, const Points& point, 
         plane_of[v] = -1;
         continue;
       }
-      const bool a_above = ca == Certified_sign::positive, b_above = cb == Certified_sign::positive;
+      const bool a_above = certainly(ca, Certified_sign::positive), b_above = certainly(cb, Certified_sign::positive);
       if (left ? (!a_above && b_above) : (a_above && !b_above))
         crossings[v] = static_cast<unsigned char>(std::min(crossings[v] + 1, 2));
     }

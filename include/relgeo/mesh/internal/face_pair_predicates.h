@@ -55,10 +55,12 @@ Maybe segment_meets_triangle(const K& k, const typename K::Point_3& p, const typ
                              const typename K::Point_3& a, const typename K::Point_3& b, const typename K::Point_3& c,
                              Certified_sign sp, Certified_sign sq) {
   const auto orient = k.orientation_3_object();
-  const auto strict = [](Certified_sign s) { return s == Certified_sign::positive || s == Certified_sign::negative; };
+  const auto strict = [](Certified_sign s) {
+    return certainly(s, Certified_sign::positive) || certainly(s, Certified_sign::negative);
+  };
   if (strict(sp) && sp == sq) return false;  // one side of the plane
   if (!is_certain(sp) || !is_certain(sq)) return std::nullopt;
-  if (sp == Certified_sign::zero && sq == Certified_sign::zero) {
+  if (certainly(sp, Certified_sign::zero) && certainly(sq, Certified_sign::zero)) {
     // In the triangle's plane: separated by an edge line of the triangle
     // (both ends strictly outside it) or by the segment's line (the three
     // corners strictly on one side), the axes of the 2D separation theorem.
@@ -70,7 +72,7 @@ Maybe segment_meets_triangle(const K& k, const typename K::Point_3& p, const typ
       const auto& v = *t[(e + 1) % 3];
       const auto& w = *t[(e + 2) % 3];
       const Certified_sign s0 = side(u, v, w, p), s1 = side(u, v, w, q);
-      if (s0 == Certified_sign::negative && s1 == Certified_sign::negative) return false;
+      if (certainly(s0, Certified_sign::negative) && certainly(s1, Certified_sign::negative)) return false;
       unknown = unknown || !is_certain(s0) || !is_certain(s1);
     }
     const Certified_sign o0 = side(p, q, a), o1 = side(p, q, b), o2 = side(p, q, c);
@@ -84,8 +86,8 @@ Maybe segment_meets_triangle(const K& k, const typename K::Point_3& p, const typ
   const Certified_sign s[3] = {orient(p, q, a, b), orient(p, q, b, c), orient(p, q, c, a)};
   bool positive = false, negative = false, unknown = false;
   for (Certified_sign x : s) {
-    positive = positive || x == Certified_sign::positive;
-    negative = negative || x == Certified_sign::negative;
+    positive = positive || certainly(x, Certified_sign::positive);
+    negative = negative || certainly(x, Certified_sign::negative);
     unknown = unknown || !is_certain(x);
   }
   if (positive && negative) return false;
@@ -93,7 +95,9 @@ Maybe segment_meets_triangle(const K& k, const typename K::Point_3& p, const typ
   return true;
 }
 
-inline bool strictly_signed(Certified_sign s) { return s == Certified_sign::positive || s == Certified_sign::negative; }
+inline bool strictly_signed(Certified_sign s) {
+  return certainly(s, Certified_sign::positive) || certainly(s, Certified_sign::negative);
+}
 
 /// Nearly parallel triangles (double coordinates whose normals, computed in
 /// doubles, are within about a degree) are certainly disjoint when, in the
@@ -151,7 +155,8 @@ Maybe triangles_meet(const K& k, const std::array<const typename K::Point_3*, 3>
   if (separated_in_projection(k, a, b)) return false;
   const auto orient = k.orientation_3_object();
   const auto one_side = [](const std::array<Certified_sign, 3>& s) {
-    return s[0] == s[1] && s[1] == s[2] && (s[0] == Certified_sign::positive || s[0] == Certified_sign::negative);
+    return s[0] == s[1] && s[1] == s[2] &&
+           (certainly(s[0], Certified_sign::positive) || certainly(s[0], Certified_sign::negative));
   };
   std::array<Certified_sign, 3> sb, sa;
   for (int i = 0; i < 3; ++i) sb[i] = orient(*a[0], *a[1], *a[2], *b[i]);
@@ -258,11 +263,11 @@ Maybe faces_meet_beyond_shared(const K& k, const Points& point, const Triangle& 
       const Index a = f[3 - fi[0] - fi[1]], b = g[3 - gi[0] - gi[1]];
       if (opposite_across_edge(k, point[u], point[w], point[a], point[b])) return false;
       const Certified_sign coplanar = k.orientation_3_object()(point[u], point[w], point[a], point[b]);
-      if (coplanar == Certified_sign::positive || coplanar == Certified_sign::negative) return false;
+      if (certainly(coplanar, Certified_sign::positive) || certainly(coplanar, Certified_sign::negative)) return false;
       if (!is_certain(coplanar)) return std::nullopt;
       const Certified_sign same_side = k.coplanar_orientation_3_object()(point[u], point[w], point[a], point[b]);
       if (!is_certain(same_side)) return std::nullopt;
-      return same_side == Certified_sign::positive;
+      return certainly(same_side, Certified_sign::positive);
     }
     default:
       return true;
@@ -283,20 +288,20 @@ std::optional<int> segment_crossing(const K& k, const typename K::Point_3& p, co
   const auto orient = k.orientation_3_object();
   const Certified_sign sp = orient(a, b, c, p), sq = orient(a, b, c, q);
   if (!is_certain(sp) || !is_certain(sq)) return std::nullopt;
-  if (sp == Certified_sign::zero && sq == Certified_sign::zero) return std::nullopt;  // in the plane
+  if (certainly(sp, Certified_sign::zero) && certainly(sq, Certified_sign::zero)) return std::nullopt;  // in the plane
   // One end on the plane (off the triangle) or both on one side: no crossing.
-  if (sp == Certified_sign::zero || sq == Certified_sign::zero || sp == sq) return 0;
+  if (certainly(sp, Certified_sign::zero) || certainly(sq, Certified_sign::zero) || sp == sq) return 0;
   const Certified_sign s[3] = {orient(p, q, a, b), orient(p, q, b, c), orient(p, q, c, a)};
   bool positive = false, negative = false;
   for (Certified_sign x : s) {
     if (!is_certain(x)) return std::nullopt;
-    positive = positive || x == Certified_sign::positive;
-    negative = negative || x == Certified_sign::negative;
+    positive = positive || certainly(x, Certified_sign::positive);
+    negative = negative || certainly(x, Certified_sign::negative);
   }
   if (positive && negative) return 0;
-  if (positive != negative && s[0] != Certified_sign::zero && s[1] != Certified_sign::zero &&
-      s[2] != Certified_sign::zero)
-    return sq == Certified_sign::positive ? 1 : -1;
+  if (positive != negative && !certainly(s[0], Certified_sign::zero) && !certainly(s[1], Certified_sign::zero) &&
+      !certainly(s[2], Certified_sign::zero))
+    return certainly(sq, Certified_sign::positive) ? 1 : -1;
   return std::nullopt;  // through an edge or a vertex
 }
 

@@ -34,14 +34,14 @@ std::vector<FT> solve_small_system(std::vector<FT> A, std::vector<FT> b) {
     for (std::size_t r = c + 1; r < m; ++r)
       if (magnitude(A[r * m + c]) > magnitude(A[piv * m + c])) piv = r;
     const Certified_sign pivot_sign = certified_sign(A[piv * m + c]);
-    if (pivot_sign == Certified_sign::zero || pivot_sign == Certified_sign::uncertain)
+    if (certainly(pivot_sign, Certified_sign::zero) || !is_certain(pivot_sign))
       throw Error(Error_code::computation_failure, "limit position: singular eigen-system");
     if (piv != c) {
       for (std::size_t k = 0; k < m; ++k) std::swap(A[c * m + k], A[piv * m + k]);
       std::swap(b[c], b[piv]);
     }
     for (std::size_t r = c + 1; r < m; ++r) {
-      if (certified_sign(A[r * m + c]) == Certified_sign::zero) continue;  // nothing to eliminate
+      if (certainly(certified_sign(A[r * m + c]), Certified_sign::zero)) continue;  // nothing to eliminate
       const FT f = Tr::quotient(A[r * m + c], A[c * m + c]);
       for (std::size_t k = c; k < m; ++k) A[r * m + k] = FT(A[r * m + k] - FT(f * A[c * m + k]));
       b[r] = FT(b[r] - FT(f * b[c]));

@@ -44,8 +44,8 @@ bool tent_maximum(const std::vector<Affine_2<FT>>& f, const FT& amin, const FT& 
   const auto intersect = [&](const Line& x, const Line& y) {
     const FT det = FT(FT(x.p * y.q) - FT(y.p * x.q));
     const Certified_sign det_sign = certified_sign(det);
-    if (det_sign == Certified_sign::zero) return;
-    if (is_interval_v<FT> && det_sign == Certified_sign::uncertain) {  // cannot tell: give up the tent
+    if (certainly(det_sign, Certified_sign::zero)) return;
+    if (is_interval_v<FT> && !is_certain(det_sign)) {  // cannot tell: give up the tent
       ok = false;
       return;
     }

@@ -144,9 +144,9 @@ struct Boolean_counts {
   std::size_t checked_operands = 0;    ///< operands checked first (0: check_operands off, or Valid_solid operands)
 };
 
-/// The result of relgeo::boolean under kernel K.
-template <IntersectionKernel_3 K>
-struct Boolean_result {
+/// The kernel-free part of a Boolean's result: the mesh in doubles and
+/// everything measured about it (what the tool, reports and CSG steps keep).
+struct Boolean_output {
   enum class Status : std::uint8_t { ok, failed };
   Status status = Status::ok;
   /// Why it failed (empty when ok): the phase and what could not be decided.
@@ -162,9 +162,6 @@ struct Boolean_result {
   Triangle_mesh<Point_3<double>> mesh;
   /// The index of the first new output vertex.
   Index first_new_vertex = 0;
-  /// The new output vertices as the kernel's points (exact under exact
-  /// kernels): new_vertex_points[j] is output vertex first_new_vertex + j.
-  std::vector<typename K::Implicit_point_3> new_vertex_points;
   /// The largest error of a rounded output coordinate (0 when every vertex is
   /// an input vertex; infinite when the kernel cannot bound it); with the
   /// repaired rounding, it includes the repair's largest change.
@@ -183,6 +180,16 @@ struct Boolean_result {
   Solid_report validation;
 
   bool ok() const { return status == Status::ok; }
+};
+
+/// The result of relgeo::boolean under kernel K: the output, and its new
+/// vertices as K's points.
+template <IntersectionKernel_3 K>
+struct Boolean_result : Boolean_output {
+  /// The new output vertices as the kernel's points (exact under exact
+  /// kernels): new_vertex_points[j] is output vertex first_new_vertex + j.
+  std::vector<typename K::Implicit_point_3> new_vertex_points;
+
   /// Output vertex i as the kernel's point: exact under exact kernels (an
   /// input vertex is its own coordinates, a new one its implicit point).
   typename K::Implicit_point_3 exact_vertex(Index i) const {

@@ -55,6 +55,7 @@
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
+#include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/mesh/face_bvh.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/self_intersection.h"
@@ -195,42 +196,38 @@ class Boolean_engine {
   };
 
   bool narrow_phase(const std::vector<Face_pair>& pairs, Result& r) {
-    Face_pair current;  // named by the failure when the kernel finds a face degenerate
-    try {
-      for (const Face_pair& pair : pairs) {
-        current = pair;
-        const auto [fa, fb] = pair;
-        // No fail-safe perturbation (thesis eq. 5.3) here: a vertex moved
-        // for one pair and not for the others would make an arrangement of
-        // no operand at all (doc/boolean.md, "The kernels").
-        const auto x = intersect_triangles(triangle(*mesh_[0], fa), triangle(*mesh_[1], fb), k_,
-                                           {.perturb_ambiguous_vertices = false});
-        if (x.kind == Triangle_intersection_kind::undecided) {
-          r.undecided_pairs.emplace_back(fa, fb);
-          continue;
-        }
-        if (x.kind == Triangle_intersection_kind::disjoint) continue;
-        ++r.counts.intersecting_pairs;
-        if (x.kind == Triangle_intersection_kind::coplanar_overlap) {
-          ++r.counts.coplanar_pairs;
-          coplanar_[0][fa].push_back(fb);
-          coplanar_[1][fb].push_back(fa);
-        }
-        std::array<Index, 6> ids{};
-        for (std::size_t i = 0; i < x.points.size(); ++i) ids[i] = register_point(x.points[i], fa, fb, x.locations[i]);
-        // Curve segments: a segment, or the boundary of a coplanar polygon.
-        const std::size_t n = x.points.size();
-        if (n == 2) segments_.push_back({ids[0], ids[1], fa, fb});
-        if (n >= 3)
-          for (std::size_t i = 0; i < n; ++i) segments_.push_back({ids[i], ids[(i + 1) % n], fa, fb});
+    // No fail-safe perturbation (thesis eq. 5.3) here: a vertex moved for one
+    // pair and not for the others would make an arrangement of no operand at
+    // all (doc/boolean.md, "The kernels").
+    internal::Triangle_intersector<K> intersector(k_, {.perturb_ambiguous_vertices = false});
+    for (const auto& [fa, fb] : pairs) {
+      const Triangle_intersection<K> x = intersector.run(triangle(*mesh_[0], fa), triangle(*mesh_[1], fb));
+      if (intersector.degenerate_input()) {
+        // A valid face that the kernel's arithmetic finds degenerate (a naive
+        // kernel's products underflow or overflow; the exact operand check
+        // passed), or a degenerate face of an unchecked operand.
+        r.failure = "narrow phase: face " + std::to_string(fa) + " of A or face " + std::to_string(fb) +
+                    " of B is degenerate in the kernel's arithmetic (intersect_triangles: a degenerate triangle)";
+        return false;
       }
-    } catch (const Precondition_violation& e) {
-      // A valid face that the kernel's arithmetic finds degenerate (a naive
-      // kernel's products underflow or overflow; the exact operand check
-      // passed), or a degenerate face of an unchecked operand.
-      r.failure = "narrow phase: face " + std::to_string(current.first) + " of A or face " +
-                  std::to_string(current.second) + " of B is degenerate in the kernel's arithmetic (" + e.what() + ")";
-      return false;
+      if (x.kind == Triangle_intersection_kind::undecided) {
+        r.undecided_pairs.emplace_back(fa, fb);
+        continue;
+      }
+      if (x.kind == Triangle_intersection_kind::disjoint) continue;
+      ++r.counts.intersecting_pairs;
+      if (x.kind == Triangle_intersection_kind::coplanar_overlap) {
+        ++r.counts.coplanar_pairs;
+        coplanar_[0][fa].push_back(fb);
+        coplanar_[1][fb].push_back(fa);
+      }
+      std::array<Index, 6> ids{};
+      for (std::size_t i = 0; i < x.points.size(); ++i) ids[i] = register_point(x.points[i], fa, fb, x.locations[i]);
+      // Curve segments: a segment, or the boundary of a coplanar polygon.
+      const std::size_t n = x.points.size();
+      if (n == 2) segments_.push_back({ids[0], ids[1], fa, fb});
+      if (n >= 3)
+        for (std::size_t i = 0; i < n; ++i) segments_.push_back({ids[i], ids[(i + 1) % n], fa, fb});
     }
     if (!r.undecided_pairs.empty()) {
       r.failure = "narrow phase: " + std::to_string(r.undecided_pairs.size()) +
@@ -319,7 +316,7 @@ class Boolean_engine {
     for (std::size_t i = 1; i < ids.size(); ++i) {
       const Certified_sign s = by_point(ids[i - 1], ids[i]);
       if (!is_certain(s)) return false;
-      if (s == Certified_sign::zero) unite(ids[i - 1], ids[i]);
+      if (certainly(s, Certified_sign::zero)) unite(ids[i - 1], ids[i]);
     }
     return true;
   }
@@ -435,7 +432,7 @@ class Boolean_engine {
     const auto orient2 = k_.implicit_orientation_2_object();
     for (int axis : order) {
       const Certified_sign s = orient2(points_[offset_[m] + t[0]], points_[offset_[m] + t[1]], points_[offset_[m] + t[2]], axis);
-      if (is_certain(s) && s != Certified_sign::zero) return axis;
+      if (is_certain(s) && !certainly(s, Certified_sign::zero)) return axis;
     }
     return first;
   }
@@ -510,7 +507,7 @@ class Boolean_engine {
         for (int e = 0; e < 3 && inside; ++e) {
           const Certified_sign s = orient2(corner(1 - m, g, e), corner(1 - m, g, (e + 1) % 3), points_[piece[v]], axis);
           if (!is_certain(s)) return std::nullopt;
-          inside = s == Certified_sign::zero || s == other_sign;
+          inside = certainly(s, Certified_sign::zero) || s == other_sign;
         }
       if (inside) return mine_sign == other_sign ? Piece_label::on_same : Piece_label::on_opposite;
     }
@@ -532,11 +529,14 @@ class Boolean_engine {
     };
     const Certified_sign o1 = side(b1, x), o2 = side(b2, x), edge = side(b1, y2);
     if (!is_certain(o1) || !is_certain(o2) || !is_certain(edge)) return Piece_label::unknown;
-    if (o1 == Certified_sign::zero || o2 == Certified_sign::zero) return Piece_label::unknown;  // coplanar locally
-    const bool below1 = o1 == Certified_sign::negative, below2 = o2 == Certified_sign::negative;
+    if (certainly(o1, Certified_sign::zero) || certainly(o2, Certified_sign::zero))
+      return Piece_label::unknown;  // coplanar locally
+    const bool below1 = certainly(o1, Certified_sign::negative), below2 = certainly(o2, Certified_sign::negative);
     bool inside;
-    if (edge == Certified_sign::negative) inside = below1 && below2;       // convex edge
-    else if (edge == Certified_sign::positive) inside = below1 || below2;  // concave edge
+    if (certainly(edge, Certified_sign::negative))
+      inside = below1 && below2;  // convex edge
+    else if (certainly(edge, Certified_sign::positive))
+      inside = below1 || below2;                                           // concave edge
     else inside = below1;                                                  // flat
     return inside ? Piece_label::inside : Piece_label::outside;
   }
@@ -585,16 +585,18 @@ class Boolean_engine {
     const auto orient = k_.orientation_3_object();
     const Certified_sign sp = orient(f[0], f[1], f[2], p), sq = orient(f[0], f[1], f[2], q);
     if (!is_certain(sp) || !is_certain(sq)) return Crossing::undecided;
-    if (sq == Certified_sign::zero) return Crossing::recast;
-    if (sp != Certified_sign::zero && sp == sq) return Crossing::none;
+    if (certainly(sq, Certified_sign::zero)) return Crossing::recast;
+    if (!certainly(sp, Certified_sign::zero) && sp == sq) return Crossing::none;
     // The line pq against the triangle's edges: all the same strict sign iff
     // it passes through the interior.
     const Certified_sign e0 = orient(p, q, f[0], f[1]), e1 = orient(p, q, f[1], f[2]), e2 = orient(p, q, f[2], f[0]);
     if (!is_certain(e0) || !is_certain(e1) || !is_certain(e2)) return Crossing::undecided;
-    const bool through_interior = e0 == e1 && e1 == e2 && e0 != Certified_sign::zero;
-    const bool misses = (e0 == Certified_sign::positive || e1 == Certified_sign::positive || e2 == Certified_sign::positive) &&
-                        (e0 == Certified_sign::negative || e1 == Certified_sign::negative || e2 == Certified_sign::negative);
-    if (sp == Certified_sign::zero) return misses ? Crossing::none : Crossing::on_surface;  // p in the plane
+    const bool through_interior = e0 == e1 && e1 == e2 && !certainly(e0, Certified_sign::zero);
+    const bool misses = (certainly(e0, Certified_sign::positive) || certainly(e1, Certified_sign::positive) ||
+                         certainly(e2, Certified_sign::positive)) &&
+                        (certainly(e0, Certified_sign::negative) || certainly(e1, Certified_sign::negative) ||
+                         certainly(e2, Certified_sign::negative));
+    if (certainly(sp, Certified_sign::zero)) return misses ? Crossing::none : Crossing::on_surface;  // p in the plane
     if (misses) return Crossing::none;
     return through_interior ? Crossing::once : Crossing::recast;  // through an edge or a vertex: cast again
   }
@@ -773,37 +775,15 @@ class Boolean_engine {
   std::array<std::vector<Piece_label>, 2> labels_;
 };
 
-/// A kernel over rationals whose Double_point_kernel hook names the filtered
-/// exact kernel (Exact_kernel).
-template <class K>
-concept Runs_on_filtered_exact_kernel =
-    requires { typename K::Double_point_kernel; } &&
-    std::same_as<typename K::Double_point_kernel, Filtered_exact_kernel> &&
-    std::same_as<typename K::Implicit_point_3, typename Rounded_implicit_policy<K, mpq_class>::Point>;
-
-/// The result of the filtered exact kernel as a result of kernel K over
-/// rationals: the same faces, the vertices as K's exact points.
-template <IntersectionKernel_3 K>
-Boolean_result<K> with_exact_points(Boolean_result<Filtered_exact_kernel>&& r) {
+/// The result under K's Double_point_kernel D as a result of K: the same
+/// output, the new vertices as K's points (the kernel hook,
+/// Has_implicit_double_point_kernel).
+template <IntersectionKernel_3 K, IntersectionKernel_3 D = typename K::Double_point_kernel>
+Boolean_result<K> with_kernel_points(Boolean_result<D>&& r) {
   Boolean_result<K> out;
-  out.status = r.status == Boolean_result<Filtered_exact_kernel>::Status::ok ? Boolean_result<K>::Status::ok
-                                                                            : Boolean_result<K>::Status::failed;
-  out.failure = std::move(r.failure);
-  out.undecided_pairs = std::move(r.undecided_pairs);
-  out.mesh = std::move(r.mesh);
-  out.rounding_error = r.rounding_error;
-  out.rounding = std::move(r.rounding);
-  out.provenance = std::move(r.provenance);
-  out.vertex_locations = std::move(r.vertex_locations);
-  out.counts = r.counts;
-  out.time = r.time;
-  out.validation = std::move(r.validation);
-  out.first_new_vertex = r.first_new_vertex;
   out.new_vertex_points.reserve(r.new_vertex_points.size());
-  for (const auto& v : r.new_vertex_points) {
-    const auto c = Staged_implicit_policy::exact_coordinates(v);
-    out.new_vertex_points.push_back({Point_3<mpq_class>{c[0], c[1], c[2]}, v.kind});
-  }
+  for (const auto& v : r.new_vertex_points) out.new_vertex_points.push_back(K::from_double_point_kernel(v));
+  static_cast<Boolean_output&>(out) = std::move(static_cast<Boolean_output&>(r));
   return out;
 }
 
@@ -814,12 +794,12 @@ Boolean_result<K> with_exact_points(Boolean_result<Filtered_exact_kernel>&& r) {
 template <IntersectionKernel_3 K>
 Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b,
                           Boolean_operation op, const K& k, const Boolean_options& options) {
-  if constexpr (internal::Runs_on_filtered_exact_kernel<K>) {
+  if constexpr (Has_implicit_double_point_kernel<K>) {
     if (options.use_double_point_kernel) {
       // The engine is gone (its memory freed) before the points are converted.
-      Boolean_result<Filtered_exact_kernel> r =
-          internal::Boolean_engine<Filtered_exact_kernel>(a, b, op, Filtered_exact_kernel{}, options).run();
-      return internal::with_exact_points<K>(std::move(r));
+      using D = typename K::Double_point_kernel;
+      Boolean_result<D> r = internal::Boolean_engine<D>(a, b, op, D{}, options).run();
+      return internal::with_kernel_points<K>(std::move(r));
     }
   }
   return internal::Boolean_engine<K>(a, b, op, k, options).run();

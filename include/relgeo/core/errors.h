@@ -1,11 +1,23 @@
 // relgeo/core/errors.h — the typed errors every public entry reports.
 //
-// Two channels (STYLE rule 9):
-//  * bad input (NaN, empty ranges, unreadable files, invalid meshes) is reported
-//    by throwing a class derived from relgeo::Error, whose code() tells the kind;
-//  * contract violations by the caller (a wrong argument the documentation rules
-//    out) throw relgeo::Precondition_violation through RELGEO_precondition.
-// Both derive from relgeo::Error, so `catch (const relgeo::Error&)` sees all.
+// One rule for every area (STYLE rule 9):
+//  * bad input — data the caller cannot cheaply check (NaN, empty ranges,
+//    unreadable files, invalid meshes, self-intersecting operands): a class
+//    derived from relgeo::Error whose code() tells the kind, thrown before any
+//    work (Invalid_input and its subclasses, Invalid_mesh, Invalid_operand...);
+//  * a broken precondition — a wrong call the documentation rules out and a
+//    cheap check finds (sizes that differ, a degenerate triangle given to
+//    intersect_triangles): Precondition_violation, through RELGEO_precondition
+//    where the check may be compiled out (RELGEO_NO_PRECONDITIONS), thrown
+//    directly where a broken precondition would otherwise mean undefined
+//    behaviour or an unsound answer (those checks stay on). It is never caught
+//    inside relgeo: not control flow;
+//  * the algorithm's own failure on valid input (a kernel that cannot decide,
+//    non-termination, a repair that does not converge): the result's status
+//    with a message naming the phase, where the result has one (hulls,
+//    Booleans, CSG, joining, subdivision Booleans); otherwise
+//    Error(Error_code::computation_failure).
+// All derive from relgeo::Error, so `catch (const relgeo::Error&)` sees all.
 #pragma once
 
 #include <stdexcept>

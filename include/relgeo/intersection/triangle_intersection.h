@@ -124,8 +124,15 @@ class Triangle_intersector {
       : k_(k), o_(o), orient3_(k.orientation_3_object()), make_(k.construct_implicit_point_3_object()),
         compare_(k.compare_xyz_3_object()), orient2_(k.implicit_orientation_2_object()) {}
 
+  /// After run(): the kernel decided that a triangle is degenerate (the
+  /// result is then `undecided`). A broken precondition of
+  /// intersect_triangles, which throws; the mesh Boolean reports it as its
+  /// failure instead.
+  bool degenerate_input() const { return degenerate_input_; }
+
   Result run(Triangle a, Triangle b) {
     Result r;
+    degenerate_input_ = false;
     for (int attempt = 0;; ++attempt) {
       std::array<Certified_sign, 3> sa, sb;
       for (int i = 0; i < 3; ++i) sa[i] = orient3_(b[0], b[1], b[2], a[i]);
@@ -160,12 +167,13 @@ class Triangle_intersector {
  private:
   static int first_uncertain(const std::array<Certified_sign, 3>& s) {
     for (int i = 0; i < 3; ++i)
-      if (s[i] == Certified_sign::uncertain) return i;
+      if (!is_certain(s[i])) return i;
     return -1;
   }
   // All three vertices strictly on one side of the other plane.
   static bool separated(const std::array<Certified_sign, 3>& s) {
-    return (s[0] == s[1] && s[1] == s[2]) && (s[0] == Certified_sign::positive || s[0] == Certified_sign::negative);
+    return (s[0] == s[1] && s[1] == s[2]) &&
+           (certainly(s[0], Certified_sign::positive) || certainly(s[0], Certified_sign::negative));
   }
 
   static constexpr bool can_perturb() {
@@ -242,7 +250,8 @@ class Triangle_intersector {
       return;
     }
     const auto zero = [](const std::array<Certified_sign, 3>& s) {
-      return s[0] == Certified_sign::zero && s[1] == Certified_sign::zero && s[2] == Certified_sign::zero;
+      return certainly(s[0], Certified_sign::zero) && certainly(s[1], Certified_sign::zero) &&
+             certainly(s[2], Certified_sign::zero);
     };
     if (zero(sa) || zero(sb)) {
       r.coplanar = true;
@@ -263,18 +272,18 @@ class Triangle_intersector {
     Cut c;
     int zeros = 0;
     for (int i = 0; i < 3; ++i)
-      if (s[i] == Certified_sign::zero) {
+      if (certainly(s[i], Certified_sign::zero)) {
         c.ends.push_back({make_(t[i]), {Triangle_location::Kind::vertex, static_cast<std::uint8_t>(i)}});
         ++zeros;
       }
     if (zeros == 2) {
       c.along_edge = true;
-      const int missing = s[0] != Certified_sign::zero ? 0 : (s[1] != Certified_sign::zero ? 1 : 2);
+      const int missing = !certainly(s[0], Certified_sign::zero) ? 0 : (!certainly(s[1], Certified_sign::zero) ? 1 : 2);
       c.edge = static_cast<std::uint8_t>((missing + 1) % 3);
     }
     for (int i = 0; i < 3; ++i) {
       const int j = (i + 1) % 3;
-      if (s[i] * s[j] != Certified_sign::negative) continue;
+      if (!certainly(s[i] * s[j], Certified_sign::negative)) continue;
       auto p = make_(t[i], t[j], o[0], o[1], o[2]);
       if (!p) return std::nullopt;
       c.ends.push_back({*p, {Triangle_location::Kind::edge, static_cast<std::uint8_t>(i)}});
@@ -282,7 +291,7 @@ class Triangle_intersector {
     if (c.ends.size() == 2) {
       const Certified_sign order = compare_(c.ends[0].point, c.ends[1].point);
       if (!is_certain(order)) return std::nullopt;  // overlap() needs the ends in order along L
-      if (order == Certified_sign::positive) std::swap(c.ends[0], c.ends[1]);
+      if (certainly(order, Certified_sign::positive)) std::swap(c.ends[0], c.ends[1]);
     }
     return c;
   }
@@ -306,11 +315,10 @@ class Triangle_intersector {
       r.kind = Triangle_intersection_kind::undecided;
       return;
     }
-    const auto merged = [&](const Cut_point& pa, const Cut_point& pb, Certified_sign c, bool start)
-        -> std::pair<IP, std::array<Triangle_location, 2>> {
-      if (c == Certified_sign::zero)
-        return {prefer(pa.point, pb.point), {pa.location, pb.location}};
-      const bool take_a = start ? c == Certified_sign::positive : c == Certified_sign::negative;
+    const auto merged = [&](const Cut_point& pa, const Cut_point& pb, Certified_sign c,
+                            bool start) -> std::pair<IP, std::array<Triangle_location, 2>> {
+      if (certainly(c, Certified_sign::zero)) return {prefer(pa.point, pb.point), {pa.location, pb.location}};
+      const bool take_a = start ? certainly(c, Certified_sign::positive) : certainly(c, Certified_sign::negative);
       if (take_a) return {pa.point, {pa.location, inside(cb)}};
       return {pb.point, {inside(ca), pb.location}};
     };
@@ -321,11 +329,11 @@ class Triangle_intersector {
       r.kind = Triangle_intersection_kind::undecided;
       return;
     }
-    if (length == Certified_sign::positive) {
+    if (certainly(length, Certified_sign::positive)) {
       r.kind = Triangle_intersection_kind::disjoint;
       return;
     }
-    if (length == Certified_sign::zero) {  // one point: where it lies is the more specific of both records
+    if (certainly(length, Certified_sign::zero)) {  // one point: where it lies is the more specific of both records
       const std::array<Triangle_location, 2> loc{more_specific(start_loc[0], end_loc[0]),
                                                  more_specific(start_loc[1], end_loc[1])};
       r.points.push_back(prefer(start, end));
@@ -377,25 +385,25 @@ class Triangle_intersector {
     Certified_sign sigma = Certified_sign::zero;
     const std::array<IP, 3> A{make_(a[0]), make_(a[1]), make_(a[2])};
     const std::array<IP, 3> B{make_(b[0]), make_(b[1]), make_(b[2])};
-    for (int k = 2; k >= 0 && sigma == Certified_sign::zero; --k) {
+    for (int k = 2; k >= 0 && certainly(sigma, Certified_sign::zero); --k) {
       sigma = orient2_(A[0], A[1], A[2], k);
       axis = k;
     }
-    if (!is_certain(sigma) || sigma == Certified_sign::zero) {
-      if (sigma == Certified_sign::zero) throw Precondition_violation("intersect_triangles: a degenerate triangle");
+    if (!is_certain(sigma) || certainly(sigma, Certified_sign::zero)) {
+      degenerate_input_ = certainly(sigma, Certified_sign::zero);
       r.kind = Triangle_intersection_kind::undecided;
       return;
     }
     const Certified_sign sigma_b = orient2_(B[0], B[1], B[2], axis);
-    if (!is_certain(sigma_b) || sigma_b == Certified_sign::zero) {
-      if (sigma_b == Certified_sign::zero) throw Precondition_violation("intersect_triangles: a degenerate triangle");
+    if (!is_certain(sigma_b) || certainly(sigma_b, Certified_sign::zero)) {
+      degenerate_input_ = certainly(sigma_b, Certified_sign::zero);
       r.kind = Triangle_intersection_kind::undecided;
       return;
     }
     // b's vertices in counter-clockwise order of the projection, then clipped
     // by a's three edge lines (a's interior on the left after orienting by sigma).
     boost::container::static_vector<Polygon_vertex, 9> poly;
-    const bool reverse_b = sigma_b == Certified_sign::negative;
+    const bool reverse_b = certainly(sigma_b, Certified_sign::negative);
     for (int i = 0; i < 3; ++i) {
       const int j = reverse_b ? (3 - i) % 3 : i;                    // vertex order
       const int edge = reverse_b ? (j + 2) % 3 : j;                 // edge from vertex j to the next in order
@@ -416,7 +424,7 @@ class Triangle_intersector {
   // the sign fixed so that the inside of a is positive.
   Certified_sign side(const IP& e0, const IP& e1, const IP& p, Certified_sign sigma, int axis) const {
     const Certified_sign o = orient2_(e0, e1, p, axis);
-    return sigma == Certified_sign::negative ? -o : o;
+    return certainly(sigma, Certified_sign::negative) ? -o : o;
   }
 
   // Sutherland-Hodgman against one closed half-plane of a. False if undecided.
@@ -441,16 +449,17 @@ class Triangle_intersector {
       const std::size_t prev = (i + n - 1) % n;
       const Certified_sign su = sides[prev], sv = sides[i];
       const Polygon_vertex& u = poly[prev];
-      if (sv == Certified_sign::positive && su == Certified_sign::negative) {
+      if (certainly(sv, Certified_sign::positive) && certainly(su, Certified_sign::negative)) {
         auto x = crossing(u.support, edge, a, b, axis);
         if (!x || !add({*x, u.support})) return false;
       }
-      if (sv != Certified_sign::negative) {
+      if (!certainly(sv, Certified_sign::negative)) {
         // A vertex on the line followed by an outside one: its edge now runs along a's edge.
-        const bool leaves = sv == Certified_sign::zero && sides[(i + 1) % n] == Certified_sign::negative;
+        const bool leaves =
+            certainly(sv, Certified_sign::zero) && certainly(sides[(i + 1) % n], Certified_sign::negative);
         if (!add({poly[i].point, leaves ? edge : poly[i].support})) return false;
       }
-      if (sv == Certified_sign::negative && su == Certified_sign::positive) {
+      if (certainly(sv, Certified_sign::negative) && certainly(su, Certified_sign::positive)) {
         auto x = crossing(u.support, edge, a, b, axis);
         if (!x || !add({*x, edge})) return false;  // the polygon now runs along a's edge
       }
@@ -484,7 +493,7 @@ class Triangle_intersector {
     using FT = typename A::FT;
     FT c[3] = {A::x(e0), A::y(e0), A::z(e0)};
     const FT moved = FT(c[axis] + FT(1));
-    if (K::compare_ft(moved, c[axis]) == Certified_sign::zero) {
+    if (certainly(K::compare_ft(moved, c[axis]), Certified_sign::zero)) {
       const FT doubled = FT(c[axis] * FT(2));
       c[axis] = is_finite_number(doubled) ? doubled : FT(c[axis] / FT(2));
     } else {
@@ -506,7 +515,7 @@ class Triangle_intersector {
       for (const auto& q : pts) {
         const Certified_sign same = compare_(q, v.point);
         if (!is_certain(same)) return undecided();
-        repeated = repeated || same == Certified_sign::zero;
+        repeated = repeated || certainly(same, Certified_sign::zero);
       }
       if (!repeated) pts.push_back(v.point);
     }
@@ -529,7 +538,7 @@ class Triangle_intersector {
     for (std::size_t i = 2; i < pts.size() && collinear; ++i) {
       const Certified_sign o = orient2_(pts[0], pts[1], pts[i], axis);
       if (!is_certain(o)) return undecided();
-      collinear = o == Certified_sign::zero;
+      collinear = certainly(o, Certified_sign::zero);
     }
     if (pts.size() >= 3 && !collinear) {
       r.kind = Triangle_intersection_kind::coplanar_overlap;
@@ -541,8 +550,8 @@ class Triangle_intersector {
     for (std::size_t i = 1; i < pts.size(); ++i) {
       const Certified_sign below = compare_(pts[i], pts[lo]), above = compare_(pts[i], pts[hi]);
       if (!is_certain(below) || !is_certain(above)) return undecided();
-      if (below == Certified_sign::negative) lo = i;
-      if (above == Certified_sign::positive) hi = i;
+      if (certainly(below, Certified_sign::negative)) lo = i;
+      if (certainly(above, Certified_sign::positive)) hi = i;
     }
     r.points.push_back(pts[lo]);
     r.locations.push_back(locs[lo]);
@@ -562,7 +571,7 @@ class Triangle_intersector {
     for (int e = 0; e < 3; ++e) {
       const Certified_sign s = side(T[e], T[(e + 1) % 3], p, sigma, axis);
       if (!is_certain(s)) return std::nullopt;
-      if (s == Certified_sign::zero) {
+      if (certainly(s, Certified_sign::zero)) {
         ++zeros;
         (first < 0 ? first : second) = e;
       }
@@ -616,15 +625,17 @@ class Triangle_overlap_test {
     const Certified_sign c1 = orient3_(a[0], a[1], b[0], b[1]);
     const Certified_sign c2 = orient3_(a[0], a[2], b[2], b[0]);
     if (!is_certain(c1) || !is_certain(c2)) return std::nullopt;
-    return c1 != Certified_sign::positive && c2 != Certified_sign::positive;
+    return !certainly(c1, Certified_sign::positive) && !certainly(c2, Certified_sign::positive);
   }
 
  private:
   static bool strictly_one_side(const std::array<Certified_sign, 3>& s) {
-    return s[0] == s[1] && s[1] == s[2] && (s[0] == Certified_sign::positive || s[0] == Certified_sign::negative);
+    return s[0] == s[1] && s[1] == s[2] &&
+           (certainly(s[0], Certified_sign::positive) || certainly(s[0], Certified_sign::negative));
   }
   static bool all_zero(const std::array<Certified_sign, 3>& s) {
-    return s[0] == Certified_sign::zero && s[1] == Certified_sign::zero && s[2] == Certified_sign::zero;
+    return certainly(s[0], Certified_sign::zero) && certainly(s[1], Certified_sign::zero) &&
+           certainly(s[2], Certified_sign::zero);
   }
   // Vertex i alone: strictly on the positive side with the others on the
   // plane or below, or on the plane with both others strictly below. (With
@@ -634,9 +645,10 @@ class Triangle_overlap_test {
   // would shrink to a point; found by fuzz/triangle_intersection.)
   static bool alone_at(const std::array<Certified_sign, 3>& s, int i) {
     const Certified_sign p = s[(i + 1) % 3], q = s[(i + 2) % 3];
-    if (s[i] == Certified_sign::zero) return p == Certified_sign::negative && q == Certified_sign::negative;
-    const auto le0 = [](Certified_sign x) { return x != Certified_sign::positive; };
-    return s[i] == Certified_sign::positive && le0(p) && le0(q);
+    if (certainly(s[i], Certified_sign::zero))
+      return certainly(p, Certified_sign::negative) && certainly(q, Certified_sign::negative);
+    const auto le0 = [](Certified_sign x) { return !certainly(x, Certified_sign::positive); };
+    return certainly(s[i], Certified_sign::positive) && le0(p) && le0(q);
   }
   // t's vertices rotated so that t[0] is alone (>= 0, the others <= 0),
   // flipping the other plane (swapping o[1], o[2], which negates t's signs and
@@ -670,10 +682,11 @@ class Triangle_overlap_test {
       std::array<typename K::Point_2, 3> A, B;
       for (int i = 0; i < 3; ++i) A[i] = project(a[i], axis), B[i] = project(b[i], axis);
       const Certified_sign sa = o2(A[0], A[1], A[2]);
-      if (sa == Certified_sign::zero) continue;
+      if (certainly(sa, Certified_sign::zero)) continue;
       const Certified_sign sb = o2(B[0], B[1], B[2]);
       if (!is_certain(sa) || !is_certain(sb)) return std::nullopt;
-      if (sb == Certified_sign::zero) throw Precondition_violation("do_intersect_triangles: a degenerate triangle");
+      if (certainly(sb, Certified_sign::zero))
+        throw Precondition_violation("do_intersect_triangles: a degenerate triangle");
       bool unknown = false;
       const auto separates = [&](const std::array<typename K::Point_2, 3>& T, Certified_sign s,
                                  const std::array<typename K::Point_2, 3>& U) {
@@ -696,6 +709,7 @@ class Triangle_overlap_test {
   }
 
   typename K::Orientation_3 orient3_;
+  bool degenerate_input_ = false;
   const K& k_;
 };
 
@@ -722,7 +736,10 @@ template <IntersectionKernel_3 K>
 Triangle_intersection<K> intersect_triangles(const std::array<typename K::Point_3, 3>& a,
                                              const std::array<typename K::Point_3, 3>& b, const K& k = K{},
                                              const Triangle_intersection_options& options = {}) {
-  return internal::Triangle_intersector<K>(k, options).run(a, b);
+  internal::Triangle_intersector<K> intersector(k, options);
+  Triangle_intersection<K> r = intersector.run(a, b);
+  if (intersector.degenerate_input()) throw Precondition_violation("intersect_triangles: a degenerate triangle");
+  return r;
 }
 
 }  // namespace relgeo

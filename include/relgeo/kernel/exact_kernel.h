@@ -3,6 +3,7 @@
 
 #include <gmpxx.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -87,6 +88,16 @@ class Exact_kernel : public internal::Kernel_base<Exact_kernel, mpq_class>,
     const std::optional<double> x = exact_double(p.x), y = exact_double(p.y);
     if (!x || !y) return std::nullopt;
     return relgeo::Point_2<double>{*x, *y};
+  }
+  /// An implicit point of the Double_point_kernel as this kernel's exact
+  /// implicit point (the hook's third part: the Boolean on input of doubles
+  /// runs on the filtered kernel and returns this kernel's points). D is the
+  /// hook's kernel, named as a template parameter so that it may still be
+  /// incomplete here.
+  template <class D = Double_point_kernel>
+  static Implicit_point_3 from_double_point_kernel(const typename D::Implicit_point_3& p) {
+    const std::array<mpq_class, 3> c = D::exact_coordinates(p);
+    return {Point_3{c[0], c[1], c[2]}, p.kind};
   }
 
   struct Orientation_2 {

@@ -57,6 +57,12 @@ class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel
   static Certified_sign compare_ft(const FT& a, const FT& b) {
     return internal::compare_certified(a, b);
   }
+  /// The exact rational coordinates of an implicit point (GMP, no filter:
+  /// for converting results, e.g. to Exact_kernel's points, not for
+  /// predicates).
+  static std::array<mpq_class, 3> exact_coordinates(const Implicit_point_3& p) {
+    return internal::Staged_implicit_policy::exact_coordinates(p);
+  }
 
   /// The sign and the stage that decided it (for statistics and tests).
   static std::pair<Certified_sign, Filter_stage> orientation_2_with_stage(const Point_2& p,

@@ -75,4 +75,15 @@ concept Has_double_point_kernel =
       { K::exact_double_point(p) } -> std::same_as<std::optional<relgeo::Point_2<double>>>;
     };
 
+/// \brief The same hook for algorithms that construct implicit points (the
+/// mesh Boolean): K also provides `K::from_double_point_kernel(p)`, an
+/// implicit point of Double_point_kernel as K's own (its exact value), so an
+/// algorithm on input of doubles runs with Double_point_kernel and converts
+/// only the points it returns. Exact_kernel models it.
+template <class K>
+concept Has_implicit_double_point_kernel =
+    Has_double_point_kernel<K> && requires(const typename K::Double_point_kernel::Implicit_point_3& p) {
+      { K::from_double_point_kernel(p) } -> std::same_as<typename K::Implicit_point_3>;
+    };
+
 }  // namespace relgeo

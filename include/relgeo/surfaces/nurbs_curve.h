@@ -56,7 +56,7 @@ class Nurbs_curve {
         throw Invalid_spline("NURBS curve: " + std::to_string(weights_.size()) + " weights for " +
                              std::to_string(points_.size()) + " control points");
       for (std::size_t i = 0; i < weights_.size(); ++i)
-        if (!is_finite_number(weights_[i]) || certified_sign(weights_[i]) != Certified_sign::positive)
+        if (!is_finite_number(weights_[i]) || !certainly(certified_sign(weights_[i]), Certified_sign::positive))
           throw Invalid_spline("NURBS curve: weight " + std::to_string(i) + " is not finite and positive");
     }
   }
@@ -123,7 +123,8 @@ class Nurbs_curve {
         return;
       }
     }
-    throw Precondition_violation("Nurbs_curve: the weight enclosure of a parameter interval contains 0 (too wide)");
+    throw Error(Error_code::computation_failure,
+                "Nurbs_curve: the weight enclosure of a parameter interval contains 0 (too wide)");
   }
 
   std::optional<std::vector<Vector>> derivatives_in_span(std::size_t span, const FT& t, int d) const {
@@ -147,7 +148,7 @@ class Nurbs_curve {
         }
       }
     if (!is_rational()) return A;
-    if (certified_sign(W[0]) != Certified_sign::positive) return std::nullopt;
+    if (!certainly(certified_sign(W[0]), Certified_sign::positive)) return std::nullopt;
     // C^(k) = (A^(k) - sum_{i=1..k} binom(k,i) w^(i) C^(k-i)) / w (NURBS Book A4.2).
     std::vector<Vector> C(static_cast<std::size_t>(d) + 1);
     for (int k = 0; k <= d; ++k) {

@@ -70,7 +70,7 @@ class Nurbs_surface {
         throw Invalid_spline("NURBS surface: " + std::to_string(weights_.size()) + " weights for " +
                              std::to_string(points_.size()) + " control points");
       for (std::size_t i = 0; i < weights_.size(); ++i)
-        if (!is_finite_number(weights_[i]) || certified_sign(weights_[i]) != Certified_sign::positive)
+        if (!is_finite_number(weights_[i]) || !certainly(certified_sign(weights_[i]), Certified_sign::positive))
           throw Invalid_spline("NURBS surface: weight " + std::to_string(i) + " is not finite and positive");
     }
     if (control_net_is_collinear())
@@ -144,7 +144,8 @@ class Nurbs_surface {
         return;
       }
     }
-    throw Precondition_violation("Nurbs_surface: the weight enclosure of a parameter box contains 0 (box too wide)");
+    throw Error(Error_code::computation_failure,
+                "Nurbs_surface: the weight enclosure of a parameter box contains 0 (box too wide)");
   }
 
   // Derivative table index (k derivatives in u, l in v), k + l <= 2.
@@ -193,7 +194,7 @@ class Nurbs_surface {
       for (int k = 0; k <= d; ++k)
         for (int l = 0; l + k <= d; ++l) S[k][l] = A[k][l];
     } else {
-      if (certified_sign(W[0][0]) != Certified_sign::positive) return std::nullopt;
+      if (!certainly(certified_sign(W[0][0]), Certified_sign::positive)) return std::nullopt;
       // NURBS Book A4.4.
       for (int k = 0; k <= d; ++k)
         for (int l = 0; l + k <= d; ++l) {
@@ -239,7 +240,7 @@ class Nurbs_surface {
     std::size_t a = 1;
     const auto certainly_zero = [](const Vector_3<FT>& w) {
       for (const FT& c : w)
-        if (certified_sign(c) != Certified_sign::zero) return false;
+        if (!certainly(certified_sign(c), Certified_sign::zero)) return false;
       return true;
     };
     while (a < points_.size() && certainly_zero(internal::operator_sub<FT, 3>(internal::to_vector(points_[a]), o))) ++a;
@@ -272,7 +273,7 @@ template <class FT>
 Vector_3<FT> unit_normal(const Surface_derivatives<FT>& d) {
   const Vector_3<FT> n = normal_direction(d);
   const FT len2 = internal::dot<FT, 3>(n, n);
-  if (certified_sign(len2) != Certified_sign::positive || !is_finite_number(len2))
+  if (!certainly(certified_sign(len2), Certified_sign::positive) || !is_finite_number(len2))
     throw Degenerate_surface("unit_normal: Su x Sv vanishes (or is not finite) at this point");
   const FT len = internal::square_root(len2);
   return {n[0] / len, n[1] / len, n[2] / len};

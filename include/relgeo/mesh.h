@@ -1,7 +1,7 @@
 // relgeo/mesh.h — umbrella header of the mesh area: the triangle mesh type,
 // its topology, validity checks, the face BVH, the exact self-intersection
 // test, the solid validation report and polygon soups (no CGAL, no Eigen
-// needed; threads with oneTBB when RELGEO_HAS_TBB is defined).
+// needed; threads with oneTBB when the target links relgeo::tbb).
 // CGAL-based parts have their own headers: relgeo/mesh/mesh_io.h (files),
 // relgeo/mesh/cgal_conversion.h (Surface_mesh, FaceGraph); Eigen:
 // relgeo/mesh/eigen_io.h.

@@ -84,7 +84,7 @@ struct Boolean_options {
   /// it can be long).
   Solid_validation_options validation{.exact_volume_string = false};
   /// Threads for the operand checks and the broad phase (1: serial; 0: every
-  /// hardware thread; more than one only when built with TBB: RELGEO_HAS_TBB,
+  /// hardware thread; more than one only when the target links relgeo::tbb,
   /// see mesh/internal/parallel.h). The result does not depend on it.
   int threads = 1;
 };

@@ -4,7 +4,9 @@ without a concept (issue 29: every public algorithm states the kernel
 concept it needs). A kernel parameter is a template parameter named K or
 Kernel, or ending in _kernel/Kernel; it is constrained when it is declared
 with a concept (`template <IntersectionKernel_3 K>`) or the template has a
-requires-clause naming it. Concept definitions themselves are skipped, and
+requires-clause naming it, or (for a class that must be nameable while its
+argument is only declared, as Cgal_kernel<CGAL::Epick>) its body opens with
+`static_assert(Concept<K>, ...)`. Concept definitions themselves are skipped, and
 so is what is not public: the files under internal/ and the blocks
 `namespace internal { ... }  // namespace internal`.
 
@@ -33,12 +35,19 @@ def unconstrained(text):
         after = text[head.end():head.end() + 200].lstrip()
         if re.match(r"concept\b", after):
             continue
+        if re.match(r"(class|struct)\s+\w+\s*;", after):  # a forward declaration: its definition is checked
+            continue
         requires_clause = re.match(r"requires\b", after) is not None
+        body = text[head.end():head.end() + 400]
+        brace = body.find("{")
+        asserted = brace >= 0 and re.match(r"\s*static_assert\((\w+)<(\w+)>", body[brace + 1:])
         for param in head.group(1).split(","):
             m = PARAM.match(param)
             if not m or not KERNEL_NAME.match(m.group(2)):
                 continue
             if requires_clause and re.search(r"\b%s\b" % m.group(2), after.split("\n")[0]):
+                continue
+            if asserted and asserted.group(2) == m.group(2):
                 continue
             line = text.count("\n", 0, head.start()) + 1
             yield line, " ".join(head.group(0).split())

@@ -589,6 +589,7 @@ class Triangle_intersector {
   typename K::Construct_implicit_point_3 make_;
   typename K::Compare_xyz_3 compare_;
   typename K::Implicit_orientation_2 orient2_;
+  bool degenerate_input_ = false;
 };
 
 }  // namespace internal
@@ -709,7 +710,6 @@ class Triangle_overlap_test {
   }
 
   typename K::Orientation_3 orient3_;
-  bool degenerate_input_ = false;
   const K& k_;
 };
 

@@ -72,7 +72,10 @@ concept CgalKernel = requires {
   typename K::Coplanar_orientation_3;
 };
 
-template <CgalKernel K>
+// Constrained by a static_assert in its body, not in its head: the tool and
+// the tests name Cgal_kernel<CGAL::Epick> where Epick is only declared (a
+// constraint in the head is checked when the name is formed).
+template <class K>
 class Cgal_kernel;
 
 namespace internal {
@@ -120,8 +123,9 @@ struct Cgal_kernel_name<CGAL::Epeck> {
 /// Kernels with exact constructions (Epeck) also model IntersectionKernel_3:
 /// an implicit point is a CGAL point constructed in the kernel's lazy exact
 /// number type, the predicates CGAL's own on it (internal/implicit_cgal.h).
-template <CgalKernel K>
+template <class K>
 class Cgal_kernel : public internal::Cgal_implicit_base<K> {
+  static_assert(CgalKernel<K>, "Cgal_kernel<K>: K must be a CGAL kernel (concept CgalKernel)");
   using Base_ft = typename K::FT;
   static constexpr bool ft_is_exact = internal::cgal_has_exact_constructions<K>;
 

@@ -39,7 +39,7 @@
 #include "relgeo/core/errors.h"
 #include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/implicit_point.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 
 namespace relgeo {
 

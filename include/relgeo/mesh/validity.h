@@ -15,7 +15,7 @@
 
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/kernel/kernel_for_number.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"

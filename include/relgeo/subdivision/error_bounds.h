@@ -70,7 +70,7 @@
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/number_traits.h"
 #include "relgeo/core/rounding.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/box_spline.h"
 #include "relgeo/subdivision/internal/bound_ranges.h"

@@ -50,7 +50,7 @@
 
 #include "relgeo/core/errors.h"
 #include "relgeo/core/fp_environment.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/box_spline.h"

@@ -10,10 +10,10 @@
 #include <utility>
 #include <vector>
 
-#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/errors.h"
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/kernel/kernel_for_number.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/internal/loop_rules.h"

@@ -50,16 +50,6 @@ bool loop_weights_everywhere(const Mesh_d& m) {
   return m.tags.empty();
 }
 
-template <class K>
-Triangle_mesh<typename K::Point_3> to_kernel(const Mesh_d& m) {
-  Triangle_mesh<typename K::Point_3> r;
-  const auto make = K{}.construct_point_3_object();
-  for (const auto& p : m.vertices) r.vertices.push_back(make(p.x, p.y, p.z));
-  r.faces = m.faces;
-  r.tags = m.tags;
-  return r;
-}
-
 struct Query {
   Index face;
   double u, v;

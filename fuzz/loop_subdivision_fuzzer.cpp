@@ -41,16 +41,6 @@ bool finite_point(const P& p) {
   return is_finite_number(p.x) && is_finite_number(p.y) && is_finite_number(p.z);
 }
 
-template <class K>
-Triangle_mesh<typename K::Point_3> to_kernel(const Mesh_d& m) {
-  Triangle_mesh<typename K::Point_3> r;
-  const auto make = K{}.construct_point_3_object();
-  for (const auto& p : m.vertices) r.vertices.push_back(make(p.x, p.y, p.z));
-  r.faces = m.faces;
-  r.tags = m.tags;
-  return r;
-}
-
 /// A coordinate within 2^10 of FT's largest finite value (floating-point FT;
 /// intervals are doubles; MPFR and rationals do not overflow).
 template <class FT>

@@ -20,6 +20,7 @@
 #include <optional>
 
 #include "fuzz_support.h"
+#include "point_pool.h"
 #include "relgeo/kernel.h"
 #include "support/implicit_oracle.h"
 
@@ -28,29 +29,6 @@ namespace {
 using namespace relgeo;
 using namespace relgeo::fuzz;
 using Coordinates = std::array<double, 3>;
-
-std::vector<Coordinates> decode_pool(Input& in) {
-  std::vector<Coordinates> pool;
-  const std::size_t n = 3 + in.byte() % 8;
-  while (pool.size() < n) {
-    const std::uint8_t op = in.byte();
-    if (pool.size() < 2 || op % 4 == 0) {
-      Coordinates c;
-      for (double& x : c) x = in.coordinate();
-      pool.push_back(c);
-    } else if (op % 4 == 1) {
-      pool.push_back(pool[in.below(pool.size())]);
-    } else {  // a + s (b - a) (+ t (c - a) when op % 4 == 3): on a line or in a plane
-      const Coordinates a = pool[in.below(pool.size())], b = pool[in.below(pool.size())],
-                        c = pool[in.below(pool.size())];
-      const double s = static_cast<std::int8_t>(in.byte()) / 8.0, t = op % 4 == 3 ? in.byte() / 16.0 : 0.0;
-      Coordinates p;
-      for (int i = 0; i < 3; ++i) p[i] = a[i] + s * (b[i] - a[i]) + t * (c[i] - a[i]);
-      pool.push_back(p);
-    }
-  }
-  return pool;
-}
 
 template <class K>
 void check(Input& in, const std::vector<Coordinates>& pool) {
@@ -115,7 +93,7 @@ void check(Input& in, const std::vector<Coordinates>& pool) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Input in(data, size);
   const int kernel = in.byte() % 6;
-  const auto pool = decode_pool(in);
+  const auto pool = decode_point_pool(in, 10);
   switch (kernel) {
     case 0: check<Failsafe_kernel<double>>(in, pool); break;
     case 1: check<Failsafe_kernel<long double>>(in, pool); break;

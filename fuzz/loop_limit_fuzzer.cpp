@@ -29,6 +29,7 @@
 #include <limits>
 
 #include "fuzz_support.h"
+#include "loop_input.h"
 #include "mesh_builder.h"
 #include "relgeo/kernel.h"
 #include "relgeo/mesh/mesh_topology.h"
@@ -40,21 +41,6 @@ namespace {
 using namespace relgeo;
 using namespace relgeo::fuzz;
 
-bool acceptable(const Mesh_d& m) {
-  const Mesh_report r = check_mesh(m, Mesh_check_options{.require_closed = false, .report_isolated_vertices = false,
-                                                         .check_collinear_faces = false});
-  if (!r.is_valid()) return false;
-  for (const auto& p : m.vertices)
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
-  const Mesh_topology t = Mesh_topology::build(m);
-  for (Index f = 0; f < t.number_of_faces(); ++f)
-    for (Index i = 0; i < 3; ++i) {
-      const Index a = t.opposite(3 * f + i), b = t.opposite(3 * f + (i + 1) % 3);
-      if (a != invalid_index && b != invalid_index && a / 3 == b / 3) return false;
-    }
-  return true;
-}
-
 bool loop_weights_everywhere(const Mesh_d& m) {
   const Mesh_topology t = Mesh_topology::build(m);
   for (Index v = 0; v < m.vertices.size(); ++v) {
@@ -62,16 +48,6 @@ bool loop_weights_everywhere(const Mesh_d& m) {
     if (!t.is_isolated(v) && !t.is_boundary_vertex(v) && n != 3 && n != 4 && n != 6) return false;
   }
   return m.tags.empty();
-}
-
-template <class K>
-Triangle_mesh<typename K::Point_3> to_kernel(const Mesh_d& m) {
-  Triangle_mesh<typename K::Point_3> r;
-  const auto make = K{}.construct_point_3_object();
-  for (const auto& p : m.vertices) r.vertices.push_back(make(p.x, p.y, p.z));
-  r.faces = m.faces;
-  r.tags = m.tags;
-  return r;
 }
 
 struct Query {
@@ -228,7 +204,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Mesh_d m = build_mesh(in);
   if (m.faces.size() > 64) return 0;
   bool accept = false;
-  require(typed_errors_only([&] { accept = acceptable(m); }, "check_mesh"), "check_mesh never throws");
+  require(typed_errors_only([&] { accept = loop_acceptable(m); }, "check_mesh"), "check_mesh never throws");
   if (mode % 2 == 0) {
     const auto queries = decode_queries(in, m.faces.size());
     switch (kernel) {

@@ -22,6 +22,7 @@
 #include <type_traits>
 
 #include "fuzz_support.h"
+#include "loop_input.h"
 #include "mesh_builder.h"
 #include "relgeo/kernel.h"
 #include "relgeo/mesh/mesh_topology.h"
@@ -35,40 +36,9 @@ using namespace relgeo::fuzz;
 
 enum class Operation { refine, limit_mesh, limit_positions };
 
-Mesh_report topology_report(const Mesh_d& m) {
-  return check_mesh(m, Mesh_check_options{.require_closed = false, .report_isolated_vertices = false,
-                                          .check_collinear_faces = false});
-}
-
-/// What Loop subdivision requires, decided here from check_mesh and the
-/// topology (independently of the subdivider's own checks).
-bool acceptable(const Mesh_d& m) {
-  const Mesh_report r = topology_report(m);
-  if (!r.is_valid()) return false;
-  for (const auto& p : m.vertices)
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
-  const Mesh_topology t = Mesh_topology::build(m);
-  for (Index f = 0; f < t.number_of_faces(); ++f)
-    for (Index i = 0; i < 3; ++i) {
-      const Index a = t.opposite(3 * f + i), b = t.opposite(3 * f + (i + 1) % 3);
-      if (a != invalid_index && b != invalid_index && a / 3 == b / 3) return false;
-    }
-  return true;
-}
-
 template <class P>
 bool finite_point(const P& p) {
   return is_finite_number(p.x) && is_finite_number(p.y) && is_finite_number(p.z);
-}
-
-template <class K>
-Triangle_mesh<typename K::Point_3> to_kernel(const Mesh_d& m) {
-  Triangle_mesh<typename K::Point_3> r;
-  const auto make = K{}.construct_point_3_object();
-  for (const auto& p : m.vertices) r.vertices.push_back(make(p.x, p.y, p.z));
-  r.faces = m.faces;
-  r.tags = m.tags;
-  return r;
 }
 
 /// A coordinate within 2^10 of FT's largest finite value (floating-point FT;
@@ -132,7 +102,7 @@ void check(const Mesh_d& m, Operation op, unsigned levels, const Loop_options& o
   combinatorial.vertices.resize(out.vertices.size());
   combinatorial.faces = out.faces;
   combinatorial.tags = out.tags;
-  if (levels > 0) require(topology_report(combinatorial).is_valid(), who + ": the result is a valid mesh");
+  if (levels > 0) require(loop_topology_report(combinatorial).is_valid(), who + ": the result is a valid mesh");
 }
 
 /// Interval refinement encloses exact refinement where both use Loop's weights.
@@ -176,7 +146,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (mode & 0x80) options.vertex_weights = Loop_vertex_weights::warren;
   const Mesh_d m = build_mesh(in);
   bool accept = false;
-  require(typed_errors_only([&] { accept = acceptable(m); }, "check_mesh"), "check_mesh never throws");
+  require(typed_errors_only([&] { accept = loop_acceptable(m); }, "check_mesh"), "check_mesh never throws");
   switch (kernel) {
     case 0: check<Naive_kernel<double>>(m, op, levels, options, accept); break;
     case 1: check<Failsafe_kernel<double>>(m, op, levels, options, accept); break;

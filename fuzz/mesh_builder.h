@@ -18,6 +18,17 @@ namespace relgeo::fuzz {
 
 using Mesh_d = Triangle_mesh<Point_3<double>>;
 
+/// m with its coordinates made points of kernel K (same faces and tags).
+template <class K>
+Triangle_mesh<typename K::Point_3> to_kernel(const Mesh_d& m) {
+  Triangle_mesh<typename K::Point_3> r;
+  const auto make = K{}.construct_point_3_object();
+  for (const auto& p : m.vertices) r.vertices.push_back(make(p.x, p.y, p.z));
+  r.faces = m.faces;
+  r.tags = m.tags;
+  return r;
+}
+
 /// The largest |coordinate| of m's vertices (0 for no vertex; NaN ignored).
 inline double largest_magnitude(const Mesh_d& m) {
   double r = 0;

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "fuzz_support.h"
+#include "loop_input.h"
 #include "relgeo/kernel/naive_kernel.h"
 #include "relgeo/mesh/mesh_io.h"
 #include "relgeo/mesh/validity.h"
@@ -35,17 +36,10 @@ void require_well_formed(const Mesh& m, const char* who) {
     require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z), std::string(who) + ": finite coordinates");
 }
 
-/// The topological checks Loop subdivision needs (no geometry: collinear
-/// faces are refined like any other, open meshes are allowed).
-Mesh_report topology_report(const Mesh& m) {
-  return check_mesh(m, Mesh_check_options{.require_closed = false, .report_isolated_vertices = false,
-                                          .check_collinear_faces = false});
-}
-
 void check_refinement(const Mesh& m) {
   if (m.faces.size() > max_refined_faces) return;
   Mesh_report report;
-  typed_errors_only([&] { report = topology_report(m); }, "check_mesh");
+  typed_errors_only([&] { report = loop_topology_report(m); }, "check_mesh");
   if (!report.is_valid()) return;
   Mesh refined;
   Loop_subdivider<Naive_kernel<double>> loop;
@@ -53,7 +47,7 @@ void check_refinement(const Mesh& m) {
   if (!ok) return;
   require(refined.faces.size() == 4 * m.faces.size(), "Loop refinement: four faces per face");
   require_well_formed(refined, "Loop refinement");
-  require(topology_report(refined).is_valid(), "Loop refinement keeps a valid mesh valid");
+  require(loop_topology_report(refined).is_valid(), "Loop refinement keeps a valid mesh valid");
 }
 
 std::string sibling_path(const std::string& path, std::string_view extension) {

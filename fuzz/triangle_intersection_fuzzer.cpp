@@ -26,6 +26,7 @@
 #include <sstream>
 
 #include "fuzz_support.h"
+#include "point_pool.h"
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel.h"
 
@@ -37,29 +38,6 @@ using Epeck = CGAL::Epeck;
 using Coordinates = std::array<double, 3>;
 using Kind = Triangle_intersection_kind;
 using Exact_xyz = std::array<mpq_class, 3>;
-
-std::vector<Coordinates> decode_pool(Input& in) {
-  std::vector<Coordinates> pool;
-  const std::size_t n = 3 + in.byte() % 6;
-  while (pool.size() < n) {
-    const std::uint8_t op = in.byte();
-    if (pool.size() < 2 || op % 4 == 0) {
-      Coordinates c;
-      for (double& x : c) x = in.coordinate();
-      pool.push_back(c);
-    } else if (op % 4 == 1) {
-      pool.push_back(pool[in.below(pool.size())]);
-    } else {
-      const Coordinates a = pool[in.below(pool.size())], b = pool[in.below(pool.size())],
-                        c = pool[in.below(pool.size())];
-      const double s = static_cast<std::int8_t>(in.byte()) / 8.0, t = op % 4 == 3 ? in.byte() / 16.0 : 0.0;
-      Coordinates p;
-      for (int i = 0; i < 3; ++i) p[i] = a[i] + s * (b[i] - a[i]) + t * (c[i] - a[i]);
-      pool.push_back(p);
-    }
-  }
-  return pool;
-}
 
 mpq_class exact_value(const Epeck::FT& x) {
   std::ostringstream s;
@@ -120,7 +98,7 @@ void check(const std::array<Coordinates, 6>& v, bool finite, bool degenerate, bo
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Input in(data, size);
   const int kernel = in.byte() % 5;
-  const auto pool = decode_pool(in);
+  const auto pool = decode_point_pool(in, 8);
   std::array<Coordinates, 6> v;
   for (auto& p : v) p = pool[in.below(pool.size())];
   bool finite = true;

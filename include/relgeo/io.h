@@ -14,3 +14,4 @@
 #include "relgeo/io/point_file.h"
 #include "relgeo/io/svg_canvas.h"
 #include "relgeo/io/text_file.h"
+#include "relgeo/io/xml_text.h"

@@ -26,10 +26,8 @@ using V3 = std::array<long double, 3>;
 V3 sub(const Point_3<double>& a, const Point_3<double>& b) {
   return {static_cast<long double>(a.x) - b.x, static_cast<long double>(a.y) - b.y, static_cast<long double>(a.z) - b.z};
 }
-V3 cross(const V3& a, const V3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-long double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+using internal::cross;
+using internal::dot;
 
 // Whether q lies inside the circumcircle of (u, v, p) by more than a
 // relative margin: |q - c|^2 < (1 - margin) R^2, c the circumcentre.

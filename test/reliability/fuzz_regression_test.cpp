@@ -9,8 +9,8 @@
 
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel.h"
-#include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/subdivision.h"
+#include "subdivision/loop_stencil_check.h"
 
 namespace relgeo::test {
 namespace {
@@ -53,13 +53,7 @@ TEST(FuzzRegression, BlzCornerWithoutCreasesRefinesByTheStencils) {
     creased.tags.add_crease(5, 2);
     (void)s.refine(creased, 1);
     const Mesh_q r = s.refine(m, 1);
-    const Mesh_topology t = Mesh_topology::build(m);
-    const Loop_features f = classify_loop_features(t, m.tags);
-    for (Index v = 0; v < m.vertices.size(); ++v)
-      EXPECT_EQ(apply_stencil(vertex_point_stencil(t, f, s.weights(), v), m.vertices), r.vertices[v]) << v;
-    for (Index e = 0; e < t.number_of_edges(); ++e)
-      EXPECT_EQ(apply_stencil(edge_point_stencil(t, f, s.weights(), e), m.vertices), r.vertices[m.vertices.size() + e])
-          << "edge " << e;
+    relgeo_test::expect_refinement_is_the_stencils(s, m, r);
     // The fused limit mesh equals refinement followed by the limit stencils.
     const Mesh_q limit = s.limit_mesh(m, 1);
     const std::vector<Point_3<mpq_class>> expected = s.limit_positions(r);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "relgeo/kernel.h"
+#include "subdivision/loop_stencil_check.h"
 #include "subdivision/subdivision_fixtures.h"
 
 namespace {
@@ -22,15 +23,7 @@ TEST(LoopStencils, RefinementFastPathEqualsTheStencilsExactly) {
     for (const Mesh_d& m : {creased_box(), open_grid(3), bipyramid(7), disk(7, 3), half_fan(5), torus(4, 3)}) {
       const Mesh_q q = convert<mpq_class>(m);
       Loop_subdivider<Exact_kernel> s(o);
-      const Mesh_q r = s.refine(q, 1);
-      const Mesh_topology t = Mesh_topology::build(q);
-      const Loop_features f = classify_loop_features(t, q.tags);
-      for (Index v = 0; v < q.vertices.size(); ++v)
-        EXPECT_EQ(apply_stencil(vertex_point_stencil(t, f, s.weights(), v), q.vertices), r.vertices[v]) << v;
-      for (Index e = 0; e < t.number_of_edges(); ++e)
-        EXPECT_EQ(apply_stencil(edge_point_stencil(t, f, s.weights(), e), q.vertices),
-                  r.vertices[q.vertices.size() + e])
-            << e;
+      expect_refinement_is_the_stencils(s, q, s.refine(q, 1));
     }
 }
 

@@ -21,6 +21,7 @@
 #include "relgeo/core/interval.h"
 #include "relgeo/kernel/interval_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
+#include "relgeo/kernel/vector_3.h"
 #include "relgeo/mesh/face_bvh.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/solid_validation.h"
@@ -72,7 +73,7 @@ inline std::array<double, 3> midpoint(const Interval_point& p) {
 // needs no care: a bad direction only fails to certify).
 inline bool separated(std::span<const Index> a, std::span<const Index> b, const std::vector<Interval_point>& p) {
   using V = std::array<double, 3>;
-  const auto dot = [](const V& u, const V& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+  using internal::dot;
   const auto extreme = [&](std::span<const Index> s, const V& dir, bool largest) {
     V best = midpoint(p[s[0]]);
     double value = dot(dir, best);

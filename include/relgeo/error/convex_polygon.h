@@ -16,10 +16,10 @@
 #include "relgeo/core/errors.h"
 #include "relgeo/core/floating_point.h"
 #include "relgeo/core/rounding.h"
-#include "relgeo/hull/internal/hull_input.h"
 #include "relgeo/hull/monotone_chain.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/kernel/point.h"
+#include "relgeo/kernel/point_access.h"
 
 namespace relgeo {
 

@@ -40,7 +40,8 @@
 #include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/implicit_point.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
+#include "relgeo/kernel/vector_3.h"
 
 namespace relgeo {
 
@@ -193,9 +194,6 @@ class Triangle_intersector {
     } else {
       using T = typename K::FT;
       const auto sub = [](const P& x, const P& y) { return std::array<double, 3>{double(x.x) - double(y.x), double(x.y) - double(y.y), double(x.z) - double(y.z)}; };
-      const auto cross = [](const std::array<double, 3>& x, const std::array<double, 3>& y) {
-        return std::array<double, 3>{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
-      };
       const auto norm = [](const std::array<double, 3>& x) { return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); };
       // Width of the zone: |det| <= eps Mx My Mz with the largest differences
       // to other[0]; divided by |normal of the other plane|.

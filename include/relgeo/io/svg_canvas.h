@@ -12,24 +12,10 @@
 #include <utility>
 
 #include "relgeo/io/text_file.h"
+#include "relgeo/io/xml_text.h"
 #include "relgeo/kernel/point.h"
 
 namespace relgeo::io {
-
-/// Text with &, <, >, " escaped for XML (control characters become blanks).
-inline std::string xml_escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
-    }
-  }
-  return out;
-}
 
 /// A viewBox coordinate as text: 3 decimals, no trailing zeros, never "-0"
 /// (non-finite values become 0: SVG has no infinity).

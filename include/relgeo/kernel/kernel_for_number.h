@@ -15,6 +15,7 @@
 #include "relgeo/kernel/mpfr_kernel.h"
 #include "relgeo/kernel/naive_kernel.h"
 #include "relgeo/kernel/point.h"
+#include "relgeo/kernel/point_access.h"
 
 namespace relgeo {
 
@@ -53,6 +54,31 @@ template <>
 struct Predicate_kernel_for_number<double> {
   using type = Filtered_exact_kernel;
 };
+
+/// The kernel to certify predicates on FT coordinates whatever FT is:
+/// Exact_kernel for rationals, otherwise Filtered_exact_kernel on the
+/// coordinates' nearest doubles (exact for double input).
+template <class FT>
+struct Certified_kernel_for_number {
+  using type = Filtered_exact_kernel;
+};
+template <>
+struct Certified_kernel_for_number<mpq_class> {
+  using type = Exact_kernel;
+};
+
+/// \brief The kernel an algorithm on points P uses when its caller names
+/// none: the rule For_number (Kernel_for_number, Predicate_kernel_for_number
+/// or Certified_kernel_for_number) applied to P's coordinate type.
+template <template <class> class For_number, class P>
+struct Kernel_for_point : For_number<typename internal::Point_access<P>::FT> {};
+
+/// K, or Kernel_for_point<For_number, P> when K is void (an algorithm's
+/// `template <KernelOrDefault K = void, class P>`, kernel/concepts.h); the
+/// default is only looked at then.
+template <class K, template <class> class For_number, class P>
+using Kernel_or_default =
+    typename std::conditional_t<std::is_void_v<K>, Kernel_for_point<For_number, P>, std::type_identity<K>>::type;
 
 /// \brief Kernel hook: a faster kernel for input that is doubles.
 ///

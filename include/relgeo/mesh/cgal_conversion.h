@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/triangle_mesh.h"
 

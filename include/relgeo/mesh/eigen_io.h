@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "relgeo/core/errors.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/triangle_mesh.h"
 

@@ -60,8 +60,8 @@
 #include "relgeo/core/interval.h"
 #include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/point.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/internal/parallel.h"
-#include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/triangle_mesh.h"
 

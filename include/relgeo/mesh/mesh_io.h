@@ -30,9 +30,9 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/internal/off_reader.h"
 #include "relgeo/mesh/internal/ply_check.h"
-#include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/polygon_soup.h"
 #include "relgeo/mesh/triangle_mesh.h"
 

@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "relgeo/kernel/point.h"
+#include "relgeo/kernel/vector_3.h"
 #include "relgeo/mesh/face_bvh.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
@@ -20,8 +21,8 @@ namespace relgeo {
 /// The squared distance from p to the triangle (a, b, c) (doubles).
 inline double squared_distance_to_triangle(const Point_3<double>& p, const Point_3<double>& a,
                                            const Point_3<double>& b, const Point_3<double>& c) {
-  const auto sub = [](const Point_3<double>& u, const Point_3<double>& v) { return Point_3<double>{u.x - v.x, u.y - v.y, u.z - v.z}; };
-  const auto dot = [](const Point_3<double>& u, const Point_3<double>& v) { return u.x * v.x + u.y * v.y + u.z * v.z; };
+  using internal::dot;
+  const auto sub = internal::difference<double>;
   const auto at = [&](const Point_3<double>& o, const Point_3<double>& e1, double s, const Point_3<double>& e2, double t) {
     const Point_3<double> q{o.x + s * e1.x + t * e2.x, o.y + s * e1.y + t * e2.y, o.z + s * e1.z + t * e2.z};
     const Point_3<double> d = sub(p, q);

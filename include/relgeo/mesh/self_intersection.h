@@ -35,26 +35,18 @@
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
+#include "relgeo/kernel/kernel_for_number.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/face_bvh.h"
 #include "relgeo/mesh/internal/embedded_stars.h"
 #include "relgeo/mesh/internal/face_pair_predicates.h"
 #include "relgeo/mesh/internal/kernel_points.h"
-#include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/mesh/validity.h"
 
 namespace relgeo {
-
-/// The kernel self-intersection tests use when the caller names none:
-/// Exact_kernel for rational coordinates, Filtered_exact_kernel otherwise
-/// (on the coordinates' nearest doubles: exact for double input).
-template <class P>
-struct Default_self_intersection_kernel {
-  using type = std::conditional_t<std::is_same_v<typename internal::Point_access<P>::FT, mpq_class>, Exact_kernel,
-                                  Filtered_exact_kernel>;
-};
 
 /// Options of find_self_intersections.
 struct Self_intersection_options {
@@ -177,10 +169,10 @@ Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k
   return internal::find_self_intersections(m, k, bvh, options.threads);
 }
 /// The same with K's default object (K: by default
-/// Default_self_intersection_kernel<P>).
+/// Certified_kernel_for_number of the coordinate type).
 template <KernelOrDefault K = void, class P>
 Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const Self_intersection_options& options = {}) {
-  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_self_intersection_kernel<P>::type, K>;
+  using Kernel = Kernel_or_default<K, Certified_kernel_for_number, P>;
   return find_self_intersections(m, Kernel{}, options);
 }
 
@@ -224,7 +216,7 @@ Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& opt
   if (!can) return r;
   bvh.emplace(m, Face_bvh_options{.threads = threads});
   const Self_intersections found =
-      internal::find_self_intersections(m, typename Default_self_intersection_kernel<P>::type{}, *bvh, threads, &t);
+      internal::find_self_intersections(m, typename Kernel_for_point<Certified_kernel_for_number, P>::type{}, *bvh, threads, &t);
   if (!found.undecided.empty() || !found.undecided_faces.empty())
     throw Error(Error_code::computation_failure,
                 "check_solid: the kernel left " + std::to_string(found.undecided.size()) + " pairs and " +
@@ -244,7 +236,7 @@ Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& opt
 /// topology in a structured report.
 template <KernelOrDefault K = void, class P>
 Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& options = {}) {
-  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_check_kernel<P>::type, K>;
+  using Kernel = Kernel_or_default<K, Predicate_kernel_for_number, P>;
   Mesh_topology t;
   std::optional<Face_bvh> bvh;
   return internal::check_solid<Kernel>(m, options, t, bvh);

@@ -314,7 +314,7 @@ void report_orientation(const K& k, const Triangle_mesh<P>& m, const Points& poi
 }  // namespace internal
 
 /// \brief The validation report of `m` as the boundary of a solid, under
-/// kernel K (by default Default_self_intersection_kernel<P>: exact
+/// kernel K (by default Certified_kernel_for_number of the coordinates: exact
 /// predicates — Filtered_exact_kernel on double coordinates, Exact_kernel on
 /// rationals; any relgeo or CGAL-adapter kernel works, a fail-safe or
 /// interval kernel reports `undecided` where it cannot decide, never a
@@ -410,10 +410,10 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
 }
 
 /// validate_solid with K's default object (K: by default
-/// Default_self_intersection_kernel<P>).
+/// Certified_kernel_for_number of the coordinate type).
 template <KernelOrDefault K = void, class P>
 Solid_report validate_solid(const Triangle_mesh<P>& m, const Solid_validation_options& o = {}) {
-  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_self_intersection_kernel<P>::type, K>;
+  using Kernel = Kernel_or_default<K, Certified_kernel_for_number, P>;
   return validate_solid(m, Kernel{}, o);
 }
 

@@ -16,20 +16,12 @@
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/kernel_for_number.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo {
-
-/// The kernel whose predicates check_mesh uses by default for points P:
-/// Predicate_kernel_for_number of the coordinate type (exact predicates for
-/// double and rationals).
-template <class P>
-struct Default_check_kernel;
-template <class FT>
-struct Default_check_kernel<Point_3<FT>> : Predicate_kernel_for_number<FT> {};
 
 /// What check_mesh looks at.
 struct Mesh_check_options {
@@ -177,10 +169,12 @@ Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& opti
 /// edges (when options.require_closed), isolated vertices, invalid tags.
 /// Geometric checks: non-finite coordinates; collinear faces through K's
 /// coplanar_orientation_3 (an `uncertain` answer gives an `undecided` issue).
-/// Never throws for bad input. Complexity O(V + F).
+/// Never throws for bad input. Complexity O(V + F). K: by default
+/// Predicate_kernel_for_number of the coordinate type (exact predicates for
+/// double and rationals).
 template <KernelOrDefault K = void, class P>
 Mesh_report check_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& options = {}) {
-  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_check_kernel<P>::type, K>;
+  using Kernel = Kernel_or_default<K, Predicate_kernel_for_number, P>;
   Mesh_topology t;
   return internal::check_mesh<Kernel>(m, options, t);
 }

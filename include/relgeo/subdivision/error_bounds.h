@@ -71,7 +71,7 @@
 #include "relgeo/core/number_traits.h"
 #include "relgeo/core/rounding.h"
 #include "relgeo/kernel/concepts.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/box_spline.h"
 #include "relgeo/subdivision/internal/bound_ranges.h"
@@ -488,11 +488,11 @@ class Loop_error_bounds {
 };
 
 /// Convenience: the limit mesh of `control` at `level` with its error bounds
-/// under kernel K (default: Default_loop_kernel of the point type).
+/// under kernel K (default: Kernel_for_number of the coordinate type).
 template <KernelOrDefault K = void, class P>
 auto loop_limit_mesh_bounds(const Triangle_mesh<P>& control, unsigned level, const Loop_options& options = {},
                             const Loop_bound_options& bounds = {}) {
-  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_loop_kernel<P>::type, K>;
+  using Kernel = Kernel_or_default<K, Kernel_for_number, P>;
   return Loop_error_bounds<Kernel>(options, bounds).compute(control, level);
 }
 

@@ -51,7 +51,7 @@
 #include "relgeo/core/errors.h"
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/kernel/concepts.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/box_spline.h"
@@ -430,11 +430,11 @@ class Loop_limit_surface {
 };
 
 /// Convenience: the limit surface point at (u, v) of face f of `control`
-/// under kernel K (default: Default_loop_kernel of the point type). Builds a
+/// under kernel K (default: Kernel_for_number of the coordinate type). Builds a
 /// Loop_limit_surface: for many queries keep one.
 template <KernelOrDefault K = void, class P>
 P loop_limit_point(const Triangle_mesh<P>& control, Index f, double u, double v, const Loop_options& options = {}) {
-  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_loop_kernel<P>::type, K>;
+  using Kernel = Kernel_or_default<K, Kernel_for_number, P>;
   return Loop_limit_surface<Kernel>(control, options).evaluate(f, u, v);
 }
 

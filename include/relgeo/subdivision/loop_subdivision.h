@@ -10,11 +10,11 @@
 #include <utility>
 #include <vector>
 
-#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/errors.h"
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/kernel_for_number.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/subdivision/internal/loop_rules.h"
@@ -24,16 +24,6 @@
 #include "relgeo/subdivision/loop_weights.h"
 
 namespace relgeo {
-
-/// The kernel used when none is given, from the point type:
-/// Kernel_for_number of the coordinate type (refinement uses only
-/// constructions, which are the same in every kernel over one number type:
-/// Naive_kernel<double>, Failsafe_kernel<double> and Filtered_exact_kernel
-/// refine identically). CGAL points: pass Cgal_kernel<K> explicitly.
-template <class P>
-struct Default_loop_kernel;
-template <class FT>
-struct Default_loop_kernel<Point_3<FT>> : Kernel_for_number<FT> {};
 
 /// \brief Loop subdivision under kernel K: refinement, limit positions, limit
 /// meshes. Holds the options and the weight table (reuse one object for many
@@ -469,12 +459,15 @@ void Loop_subdivider<K>::limit_of_old_vertices(const Level& lv, const Acc* p, st
 }
 
 /// Refines `m` `levels` times with Loop's rules under kernel K (default:
-/// Default_loop_kernel of the point type). See Loop_subdivider for the
-/// requirements, errors and output numbering.
+/// Kernel_for_number of the coordinate type: refinement uses only
+/// constructions, which are the same in every kernel over one number type,
+/// so Naive_kernel<double>, Failsafe_kernel<double> and Filtered_exact_kernel
+/// refine identically; CGAL points: pass Cgal_kernel<K>). See Loop_subdivider
+/// for the requirements, errors and output numbering.
 template <KernelOrDefault K = void, class P>
 Triangle_mesh<P> loop_subdivide(const Triangle_mesh<P>& m, unsigned levels,
                                 const Loop_options& options = {}) {
-  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_loop_kernel<P>::type, K>;
+  using Kernel = Kernel_or_default<K, Kernel_for_number, P>;
   return Loop_subdivider<Kernel>(options).refine(m, levels);
 }
 
@@ -483,7 +476,7 @@ Triangle_mesh<P> loop_subdivide(const Triangle_mesh<P>& m, unsigned levels,
 template <KernelOrDefault K = void, class P>
 Triangle_mesh<P> loop_limit_mesh(const Triangle_mesh<P>& m, unsigned levels,
                                  const Loop_options& options = {}) {
-  using Kernel = std::conditional_t<std::is_void_v<K>, typename Default_loop_kernel<P>::type, K>;
+  using Kernel = Kernel_or_default<K, Kernel_for_number, P>;
   return Loop_subdivider<Kernel>(options).limit_mesh(m, levels);
 }
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "relgeo/kernel/point.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo {

@@ -67,6 +67,12 @@ std::string one_line(std::string_view message) {
   return out;
 }
 
+std::string comma_list(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  return list;
+}
+
 std::string Text_table::str() const {
   const std::size_t ncols = header_.size();
   std::vector<std::size_t> width(ncols, 0);

@@ -61,6 +61,9 @@ std::string duration_text(double seconds);
 /// stay on one line.
 std::string one_line(std::string_view message);
 
+/// "a, b, c": the choices a usage message lists.
+std::string comma_list(const std::vector<std::string>& names);
+
 /// "key   value" lines with the values aligned at column `width`.
 class Key_value_text {
  public:

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "cli/text.h"
 #include "kernels/list.h"
@@ -36,6 +37,9 @@ constexpr std::size_t first_admitted(std::index_sequence<I...>) {
   ((first == kernel_count && Admitted::template admits<kernel_at<I>> ? (first = I, 0) : 0), ...);
   return first;
 }
+
+template <class K, class... Admitted>
+inline constexpr bool admitted_by_any = (Admitted::template admits<K> || ...);
 
 template <class Admitted, class R, std::size_t I, class F>
 R dispatch_from(const Kernel_entry& entry, F& f) {
@@ -60,6 +64,27 @@ decltype(auto) with_kernel(const Kernel_entry& entry, F&& f) {
   static_assert(first < kernel_count, "the policy admits no kernel");
   using R = std::invoke_result_t<F&, kernel_at<first>>;
   return dispatch_internal::dispatch_from<Admitted, R, 0>(entry, f);
+}
+
+/// Whether `Admitted` admits the kernel of `entry`.
+template <class Admitted>
+bool admits_kernel(const Kernel_entry& entry) {
+  return [&]<std::size_t... I>(std::index_sequence<I...>) {
+    return ((entry.index == I && Admitted::template admits<kernel_at<I>>) || ...);
+  }(std::make_index_sequence<kernel_count>{});
+}
+
+/// The labels of the kernels that one of the policies admits, in the list's
+/// order: what a command offers, and lists when it refuses a kernel.
+template <class... Admitted>
+std::vector<std::string> admitted_kernel_names() {
+  std::vector<std::string> names;
+  const auto& registry = kernel_registry();
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    ((dispatch_internal::admitted_by_any<kernel_at<I>, Admitted...> ? names.push_back(registry[I].label()) : void()),
+     ...);
+  }(std::make_index_sequence<kernel_count>{});
+  return names;
 }
 
 /// The same for a kernel name (K::name() or its alias).

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "relgeo/boolean/boolean_types.h"
+#include "relgeo/kernel/vector_3.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
@@ -35,9 +36,7 @@ inline Point_3<double> lerp(const Point_3<double>& a, const Point_3<double>& b, 
 /// it) in the triangle, clamped to the triangle.
 inline std::array<double, 3> barycentric(const Point_3<double>& p, const Point_3<double>& a, const Point_3<double>& b,
                                          const Point_3<double>& c) {
-  const double e1[3] = {b.x - a.x, b.y - a.y, b.z - a.z}, e2[3] = {c.x - a.x, c.y - a.y, c.z - a.z};
-  const double d[3] = {p.x - a.x, p.y - a.y, p.z - a.z};
-  const auto dot = [](const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+  const Point_3<double> e1 = difference(b, a), e2 = difference(c, a), d = difference(p, a);
   const double a11 = dot(e1, e1), a12 = dot(e1, e2), a22 = dot(e2, e2), r1 = dot(d, e1), r2 = dot(d, e2);
   const double det = a11 * a22 - a12 * a12;
   if (!(det > 0)) return {1, 0, 0};

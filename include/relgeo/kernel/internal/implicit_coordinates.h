@@ -33,6 +33,7 @@
 #include <cstddef>
 
 #include "relgeo/kernel/point.h"
+#include "relgeo/kernel/vector_3.h"
 
 namespace relgeo::internal {
 
@@ -48,21 +49,6 @@ struct Homogeneous_3 {
 template <class NT>
 Homogeneous_3<NT> explicit_coordinates(const Point_3<NT>& p) {
   return {p.x, p.y, p.z, NT(1), true};
-}
-
-/// Differences and products as named NT temporaries (no expression
-/// template escapes, as in determinants.h).
-template <class NT>
-Point_3<NT> difference(const Point_3<NT>& a, const Point_3<NT>& b) {
-  return {NT(a.x - b.x), NT(a.y - b.y), NT(a.z - b.z)};
-}
-template <class NT>
-Point_3<NT> cross(const Point_3<NT>& a, const Point_3<NT>& b) {
-  return {NT(NT(a.y * b.z) - NT(a.z * b.y)), NT(NT(a.z * b.x) - NT(a.x * b.z)), NT(NT(a.x * b.y) - NT(a.y * b.x))};
-}
-template <class NT>
-NT dot(const Point_3<NT>& a, const Point_3<NT>& b) {
-  return NT(NT(NT(a.x * b.x) + NT(a.y * b.y)) + NT(a.z * b.z));
 }
 
 /// The parts of the LPI point of the line through p, q and the plane

@@ -28,10 +28,10 @@
 #include <vector>
 
 #include "relgeo/core/number_traits.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/face_bvh.h"
 #include "relgeo/mesh/internal/face_pair_predicates.h"
 #include "relgeo/mesh/internal/mesh_components.h"
-#include "relgeo/mesh/internal/point_access.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::internal {

@@ -32,7 +32,7 @@
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
 

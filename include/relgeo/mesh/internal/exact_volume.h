@@ -33,7 +33,7 @@
 #include "relgeo/core/internal/error_free.h"
 #include "relgeo/core/interval.h"
 #include "relgeo/core/number_traits.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::internal {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "relgeo/core/number_traits.h"
-#include "relgeo/mesh/internal/point_access.h"
+#include "relgeo/kernel/point_access.h"
 
 namespace relgeo::internal {
 

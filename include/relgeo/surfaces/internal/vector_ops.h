@@ -1,5 +1,6 @@
 // relgeo/surfaces/internal/vector_ops.h — fixed-size vectors of any number
-// type (std::array<FT, D>) and the few operations the spline code needs, plus
+// type (std::array<FT, D>) and the few operations the spline code needs (dot
+// and cross: relgeo/kernel/vector_3.h), plus
 // the square root of each number type relgeo knows.
 #pragma once
 
@@ -13,6 +14,7 @@
 #include "relgeo/core/number_traits.h"
 #include "relgeo/core/rounding.h"
 #include "relgeo/kernel/point.h"
+#include "relgeo/kernel/vector_3.h"
 
 namespace relgeo {
 
@@ -54,16 +56,6 @@ Vector_nd<FT, D> scaled(const Vector_nd<FT, D>& a, const FT& s) {
 template <class FT, int D>
 void add_scaled(Vector_nd<FT, D>& a, const FT& s, const Vector_nd<FT, D>& b) {
   for (int i = 0; i < D; ++i) a[i] += s * b[i];
-}
-template <class FT, int D>
-FT dot(const Vector_nd<FT, D>& a, const Vector_nd<FT, D>& b) {
-  FT s = a[0] * b[0];
-  for (int i = 1; i < D; ++i) s += a[i] * b[i];
-  return s;
-}
-template <class FT>
-Vector_3<FT> cross(const Vector_3<FT>& a, const Vector_3<FT>& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
 template <class FT>

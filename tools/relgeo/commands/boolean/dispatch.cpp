@@ -2,7 +2,6 @@
 // kernel of the tool that models IntersectionKernel_3 (relgeo's own and
 // CGAL's Epeck).
 #include "kernels/cgal_kernels.h"
-#define RELGEO_TOOL_CGAL_KERNELS_COMPLETE 1
 #include "commands/boolean/facade.h"
 #include "commands/boolean/intersection_kernels.h"
 #include "commands/boolean/run_of.h"
@@ -12,17 +11,22 @@
 namespace relgeo::tool {
 namespace {
 
-template <std::size_t... I>
-std::vector<std::string> admitted_names(std::index_sequence<I...>) {
-  std::vector<std::string> n;
-  ((Intersection_kernels::admits<kernel_at<I>> ? n.push_back(kernel_registry()[I].label()) : void()), ...);
-  return n;
-}
+// Relgeo_intersection_kernels and the CGAL adapters that model
+// IntersectionKernel_3 (Epeck): the CGAL types are complete in this file.
+struct Intersection_kernels {
+  template <class K>
+  static constexpr bool check() {
+    if constexpr (is_cgal_kernel_v<K>) return IntersectionKernel_3<K>;
+    else return Relgeo_intersection_kernels::admits<K>;
+  }
+  template <class K>
+  static constexpr bool admits = check<K>();
+};
 
 }  // namespace
 
 const std::vector<std::string>& boolean_kernel_names() {
-  static const std::vector<std::string> names = admitted_names(std::make_index_sequence<kernel_count>{});
+  static const std::vector<std::string> names = admitted_kernel_names<Intersection_kernels>();
   return names;
 }
 
@@ -30,9 +34,8 @@ void validate_boolean_kernel(const std::string& name) {
   const Kernel_entry& e = find_kernel(name);
   for (const std::string& n : boolean_kernel_names())
     if (n == e.label()) return;
-  std::string list;
-  for (const std::string& n : boolean_kernel_names()) list += (list.empty() ? "" : ", ") + n;
-  throw Usage_error("kernel '" + name + "' cannot run a Boolean (no implicit points); use one of: " + list);
+  throw Usage_error("kernel '" + name + "' cannot run a Boolean (no implicit points); use one of: " +
+                    comma_list(boolean_kernel_names()));
 }
 
 Boolean_run evaluate_boolean(const std::string& kernel, const Mesh_double& a, const Mesh_double& b, Boolean_operation op,

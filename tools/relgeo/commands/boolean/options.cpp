@@ -6,8 +6,7 @@
 namespace relgeo::tool {
 
 std::string boolean_help_footer() {
-  std::string kernels;
-  for (const std::string& n : boolean_kernel_names()) kernels += (kernels.empty() ? "" : ", ") + n;
+  const std::string kernels = comma_list(boolean_kernel_names());
   return "\nThe regularised Boolean of the solids bounded by two closed triangle meshes (OFF, OBJ, PLY, STL), exact "
          "under the filtered and exact kernels (relgeo/boolean.h, doc/boolean.md).\n"
          "Kernels: " + kernels + " (default filtered).\n"

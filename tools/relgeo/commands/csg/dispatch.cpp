@@ -18,9 +18,7 @@ const std::vector<std::string>& csg_kernel_names() {
 void validate_csg_kernel(const std::string& name) {
   const auto& names = csg_kernel_names();
   if (std::find(names.begin(), names.end(), name) != names.end()) return;
-  std::string list;
-  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-  throw Usage_error("csg: kernel '" + name + "' is not one of " + list);
+  throw Usage_error("csg: kernel '" + name + "' is not one of " + comma_list(names));
 }
 
 Csg_result evaluate_csg(const std::string& kernel, const Csg_node& tree, const Csg_options& options) {

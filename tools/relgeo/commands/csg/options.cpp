@@ -6,8 +6,7 @@
 namespace relgeo::tool {
 
 std::string csg_help_footer() {
-  std::string kernels;
-  for (const std::string& n : csg_kernel_names()) kernels += (kernels.empty() ? "" : ", ") + n;
+  const std::string kernels = comma_list(csg_kernel_names());
   return "\nEvaluates a CSG tree of closed triangle meshes with relgeo's Boolean (relgeo::csg, doc/boolean.md, "
          "\"CSG trees\"). TREE.json is a node: {\"op\": \"union\" | \"intersection\" | \"difference\", \"args\": "
          "[NODE, NODE, ...]} or a leaf {\"mesh\": \"file.off\"} (OFF, OBJ, PLY, STL; paths relative to the JSON "

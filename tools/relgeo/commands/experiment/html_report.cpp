@@ -4,23 +4,13 @@
 #include <algorithm>
 #include <cctype>
 
+#include "relgeo/io/xml_text.h"
+
 namespace relgeo::tool {
 
 namespace {
 
-std::string escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escape(std::string_view s) { return io::xml_escape(s, io::Control_characters::keep); }
 
 /// A relative link with the characters a URL must not carry raw encoded
 /// (file names hold '^', '<', '>' and blanks).

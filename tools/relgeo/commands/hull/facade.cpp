@@ -33,9 +33,7 @@ std::string hull_algorithms_help() {
 void validate_hull_combination(std::string_view algorithm, std::string_view kernel) {
   const auto& names = hull_algorithm_names();
   if (std::find(names.begin(), names.end(), algorithm) == names.end()) {
-    std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    throw Usage_error("unknown algorithm '" + std::string(algorithm) + "'; algorithms: " + list);
+    throw Usage_error("unknown algorithm '" + std::string(algorithm) + "'; algorithms: " + comma_list(names));
   }
   if (algorithm == "cgal" && !find_kernel(kernel).cgal)
     throw Usage_error("algorithm 'cgal' (CGAL::convex_hull_2) needs a CGAL kernel (cgal-sc, "

@@ -7,8 +7,7 @@
 namespace relgeo::tool {
 
 std::string orient_grid_help_footer() {
-  std::string standard;
-  for (const auto& k : standard_grid_kernels()) standard += (standard.empty() ? "" : ", ") + k;
+  const std::string standard = comma_list(standard_grid_kernels());
   return "Defaults: without --triple and --p/--q/--r the grid of triple a; without --kernel the standard kernels "
          "(" + standard + ") side by side, one row each.\n"
          "Coordinates are decimal literals, correctly rounded to double; NaN and infinities are refused.\n"

@@ -12,6 +12,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "cli/text.h"
 #include "commands/subdivide/facade.h"
 #include "commands/subdivide/report.h"
 #include "relgeo/io/json.h"
@@ -29,8 +30,7 @@ std::string g3(double v) { return measure_text(v, 3); }
 }  // namespace
 
 std::string subdivide_help_footer() {
-  std::string kernels;
-  for (const auto& k : subdivision_kernel_names()) kernels += (kernels.empty() ? "" : ", ") + k;
+  const std::string kernels = comma_list(subdivision_kernel_names());
   return "Input: a triangle mesh (OFF, OBJ, PLY or STL by extension; '-' reads OFF from standard input), "
          "edge- and vertex-manifold and consistently oriented (open meshes: boundary = crease). --tags "
          "reads crease edges and corners ('crease a b', 'corner v', 0-based). Bad, unreadable or "

@@ -5,18 +5,9 @@
 
 namespace relgeo::tool {
 
-namespace {
-
-template <std::size_t... I>
-bool admitted(std::size_t index, std::index_sequence<I...>) {
-  return ((index == I && Subdivision_exact_kernels::admits<kernel_at<I>>) || ...);
-}
-
-}  // namespace
-
 bool run_subdivision_exact_kernels(const Mesh_double& input, const Subdivision_request& rq, Subdivision_result& r) {
   const Kernel_entry& k = find_kernel(rq.kernel);
-  if (!admitted(k.index, std::make_index_sequence<kernel_count>{})) return false;
+  if (!admits_kernel<Subdivision_exact_kernels>(k)) return false;
   r = with_kernel<Subdivision_exact_kernels>(k, [&]<class K>(const K&) { return run_subdivision_with<K>(input, rq); });
   return true;
 }

@@ -7,23 +7,9 @@
 
 namespace relgeo::tool {
 
-namespace {
-
-template <std::size_t... I>
-std::vector<std::string> admitted_names(std::index_sequence<I...>) {
-  std::vector<std::string> names;
-  const auto& registry = kernel_registry();
-  ((Subdivision_float_kernels::admits<kernel_at<I>> || Subdivision_exact_kernels::admits<kernel_at<I>>
-        ? names.push_back(registry[I].label())
-        : void()),
-   ...);
-  return names;
-}
-
-}  // namespace
-
 const std::vector<std::string>& subdivision_kernel_names() {
-  static const std::vector<std::string> names = admitted_names(std::make_index_sequence<kernel_count>{});
+  static const std::vector<std::string> names =
+      admitted_kernel_names<Subdivision_float_kernels, Subdivision_exact_kernels>();
   return names;
 }
 
@@ -31,10 +17,8 @@ void validate_subdivision_kernel(const std::string& name) {
   const Kernel_entry& k = find_kernel(name);  // unknown names: the tool's usual message
   for (const auto& n : subdivision_kernel_names())
     if (n == k.label()) return;
-  std::string list;
-  for (const auto& n : subdivision_kernel_names()) list += (list.empty() ? "" : ", ") + n;
   throw Usage_error("kernel '" + name + "' is not supported by subdivide (its constructions are needed; supported: " +
-                    list + ")");
+                    comma_list(subdivision_kernel_names()) + ")");
 }
 
 std::vector<std::pair<double, double>> dyadic_samples(int n) {

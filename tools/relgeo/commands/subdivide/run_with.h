@@ -13,6 +13,7 @@
 #include "commands/subdivide/facade.h"
 #include "kernels/dispatch.h"
 #include "relgeo/core/internal/stopwatch.h"
+#include "relgeo/kernel/vector_3.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/subdivision.h"
 
@@ -64,12 +65,10 @@ Mesh_double to_double_mesh(const Triangle_mesh<P>& m) {
   return r;
 }
 
-inline Point_3<double> sub(const Point_3<double>& a, const Point_3<double>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline double dot(const Point_3<double>& a, const Point_3<double>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+using internal::cross;
+using internal::difference;
+using internal::dot;
 inline double norm(const Point_3<double>& a) { return std::sqrt(dot(a, a)); }
-inline Point_3<double> cross(const Point_3<double>& a, const Point_3<double>& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
 /// The point (u, v) of face f of m (w v0 + u v1 + v v2).
 inline Point_3<double> face_point(const Mesh_double& m, Index f, double u, double v) {
   const auto& a = m.vertices[m.faces[f][0]];
@@ -120,7 +119,7 @@ Subdivision_result run_subdivision_with(const Mesh_double& input, const Subdivis
   if (rq.exact_limit_vertices) {
     res.rounding = 0;
     for (std::size_t v = 0; v < res.limit.vertices.size(); ++v)
-      res.rounding = std::max(res.rounding, norm(sub(res.limit.vertices[v], (*rq.exact_limit_vertices)[v])));
+      res.rounding = std::max(res.rounding, norm(difference(res.limit.vertices[v], (*rq.exact_limit_vertices)[v])));
   }
 
   // Sampling: distances of the refined and the limit mesh to the limit surface.
@@ -133,16 +132,17 @@ Subdivision_result run_subdivision_with(const Mesh_double& input, const Subdivis
   res.face_offset.assign(nf, 0);
   for (Index f = 0; f < nf && !grid.empty(); ++f) {
     const auto& q = res.limit.vertices;
-    const Point_3<double> n = cross(sub(q[L.faces[f][1]], q[L.faces[f][0]]), sub(q[L.faces[f][2]], q[L.faces[f][0]]));
+    const Point_3<double> n =
+        cross(difference(q[L.faces[f][1]], q[L.faces[f][0]]), difference(q[L.faces[f][2]], q[L.faces[f][0]]));
     const double len = norm(n);
     for (std::size_t i = 0; i < grid.size(); ++i) {
       const auto [u, v] = grid[i];
       const Point_3<double> s =
           rq.reference ? (*rq.reference)[f * grid.size() + i] : to_double(surface.evaluate(f, u, v));
       ++res.samples;
-      res.refined_distance = std::max(res.refined_distance, norm(sub(s, face_point(res.refined, f, u, v))));
-      res.limit_distance = std::max(res.limit_distance, norm(sub(s, face_point(res.limit, f, u, v))));
-      const double h = len > 0 ? dot(sub(s, q[L.faces[f][0]]), n) / len : 0;
+      res.refined_distance = std::max(res.refined_distance, norm(difference(s, face_point(res.refined, f, u, v))));
+      res.limit_distance = std::max(res.limit_distance, norm(difference(s, face_point(res.limit, f, u, v))));
+      const double h = len > 0 ? dot(difference(s, q[L.faces[f][0]]), n) / len : 0;
       height[f * grid.size() + i] = h;
       res.face_offset[f] = std::max(res.face_offset[f], std::abs(h));
       res.limit_normal_offset = std::max(res.limit_normal_offset, std::abs(h));

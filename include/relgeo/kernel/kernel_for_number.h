@@ -8,9 +8,10 @@
 #include <optional>
 #include <type_traits>
 
+#include "relgeo/core/interval.h"
+#include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
-#include "relgeo/core/interval.h"
 #include "relgeo/kernel/interval_kernel.h"
 #include "relgeo/kernel/mpfr_kernel.h"
 #include "relgeo/kernel/naive_kernel.h"
@@ -76,7 +77,7 @@ struct Kernel_for_point : For_number<typename internal::Point_access<P>::FT> {};
 /// K, or Kernel_for_point<For_number, P> when K is void (an algorithm's
 /// `template <KernelOrDefault K = void, class P>`, kernel/concepts.h); the
 /// default is only looked at then.
-template <class K, template <class> class For_number, class P>
+template <KernelOrDefault K, template <class> class For_number, class P>
 using Kernel_or_default =
     typename std::conditional_t<std::is_void_v<K>, Kernel_for_point<For_number, P>, std::type_identity<K>>::type;
 

@@ -91,13 +91,7 @@ TEST(Measures, ExactConditionNumbersOfHilbertMatrices) {
 
 TEST(Measures, EstimatedConditionNumberBracketsTheExactOne) {
   for (int n : {5, 20, 35}) {
-    std::mt19937_64 rng(static_cast<unsigned>(n));
-    std::uniform_real_distribution<double> d(-1, 1);
-    Dense_matrix<double> a(n, n);
-    Dense_vector<double> b(n);
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) a(i, j) = d(rng);
-    for (int i = 0; i < n; ++i) b(i) = d(rng);
+    const auto [a, b] = random_system(n, static_cast<unsigned>(n));
     const Linear_reference exact(a, b);
     const Linear_reference est(a, b, {.exact_solution_limit = 0, .exact_condition_limit = 0});
     EXPECT_TRUE(exact.condition().exact);

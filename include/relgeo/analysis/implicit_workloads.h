@@ -173,186 +173,183 @@ inline Vec nearest_lpi(const Vec& p, const Vec& q, const Vec& r, const Vec& s, c
   return out;
 }
 
+// ---- the families (file comment) ----------------------------------------------
+/// A pool of `points` random points (explicit, LPI, TPI in turn, each from
+/// `point()`), then random cases on it until there are `cases`.
+template <class Point>
+void add_random_pool_and_cases(Implicit_builder& b, std::size_t points, std::size_t cases, Point&& point) {
+  for (std::size_t i = 0; i < points; ++i) {
+    switch (i % 3) {
+      case 0: b.add_explicit(point()); break;
+      case 1: b.add_lpi(point(), point(), point(), point(), point()); break;
+      default: {
+        std::array<Vec, 9> v;
+        for (auto& x : v) x = point();
+        b.add_tpi(v);
+      }
+    }
+  }
+  while (b.cases() < cases) {
+    b.orientation_3(b.random_index(), b.random_index(), b.random_index(), b.random_index());
+    b.orientation_2(b.random_index(), b.random_index(), b.random_index());
+    b.compare(b.random_index(), b.random_index());
+  }
+}
+
+inline Implicit_workload random_family(const std::string& name, double scale, std::uint64_t seed, std::size_t cases) {
+  Implicit_builder b(name, seed);
+  add_random_pool_and_cases(b, std::max<std::size_t>(64, cases / 8), cases, [&] { return b.random_point(scale); });
+  return b.take();
+}
+
+inline Implicit_workload on_plane_family(std::size_t cases, std::uint64_t seed) {
+  Implicit_builder b("on-plane", seed);
+  while (b.cases() < cases) {
+    const Vec p = b.random_point(), q = b.random_point(), r = b.random_point(), s = b.random_point(),
+              t = b.random_point(), c = b.random_point();
+    const std::uint32_t L = b.add_lpi(p, q, r, s, t);
+    const std::uint32_t P = b.add_explicit(p), Q = b.add_explicit(q), R = b.add_explicit(r),
+                        S = b.add_explicit(s), T = b.add_explicit(t), C = b.add_explicit(c);
+    const int k = nonzero_ulps(b.rng());
+    const std::uint32_t R2 = b.add_explicit(moved(r, small_int(b.rng(), 0, 2), k));
+    const std::uint32_t P2 = b.add_explicit(moved(p, small_int(b.rng(), 0, 2), k));
+    const std::uint32_t N = b.add_explicit(nearest_lpi(p, q, r, s, t));
+    b.orientation_3(R, S, T, L);   // zero: on its plane
+    b.orientation_3(L, R, S, T);   // zero, the implicit point first
+    b.orientation_3(P, Q, C, L);   // zero: on its line
+    b.orientation_3(R2, S, T, L);  // a few ulps off
+    b.orientation_3(P2, Q, C, L);
+    b.orientation_2(P, Q, L);  // zero: collinear in every projection
+    b.orientation_2(L, P2, Q);
+    b.compare(L, N);  // a few ulps apart, or equal
+    b.compare(L, P);
+  }
+  return b.take();
+}
+
+/// Lines pq and rs cross exactly at X.
+inline Implicit_workload same_point_family(std::size_t cases, std::uint64_t seed) {
+  Implicit_builder b("same-point", seed);
+  while (b.cases() < cases) {
+    const Vec X = b.dyadic_point(40);
+    const Vec d1 = b.small_vector(), d2 = b.small_vector();
+    if (d1[0] * d2[1] == d1[1] * d2[0] && d1[1] * d2[2] == d1[2] * d2[1] && d1[0] * d2[2] == d1[2] * d2[0])
+      continue;  // parallel directions
+    const double a = small_int(b.rng(), 1, 5), c = small_int(b.rng(), 1, 5);
+    const Vec p = plus(X, d1, -a), q = plus(X, d1, c), r = plus(X, d2, -c), s = plus(X, d2, a);
+    const Vec t = b.random_point(), t2 = b.random_point(), u = b.random_point();
+    const std::uint32_t L1 = b.add_lpi(p, q, r, s, t), L2 = b.add_lpi(p, q, r, s, t2),
+                        L3 = b.add_lpi(r, s, p, q, u);
+    const std::uint32_t XP = b.add_explicit(X), P = b.add_explicit(p), Q = b.add_explicit(q),
+                        R = b.add_explicit(r), U = b.add_explicit(u);
+    b.compare(L1, L2);
+    b.compare(L1, L3);
+    b.compare(L3, XP);
+    b.orientation_3(P, Q, R, L3);  // zero: X lies in the plane of the two lines
+    b.orientation_3(L1, L2, P, U);  // zero: two equal points
+    b.orientation_3(P, R, U, L1);   // X, p, r span the plane of the lines: nonzero in general
+    b.orientation_2(L1, P, R);  // X, p, r: a triangle of the crossing lines (nonzero unless degenerate)
+    b.orientation_2(L2, L3, P);  // zero: two equal points
+  }
+  return b.take();
+}
+
+/// Lines of the plane ABC crossing the plane rst.
+inline Implicit_workload collinear_family(std::size_t cases, std::uint64_t seed) {
+  Implicit_builder b("collinear", seed);
+  while (b.cases() < cases) {
+    const Vec A = b.dyadic_point(30), B = plus(A, b.small_vector()), C = plus(A, b.small_vector());
+    const Vec r = b.random_point(), s = b.random_point(), t = b.random_point();
+    std::array<std::uint32_t, 3> L{};
+    for (auto& l : L) {
+      const double a1 = small_int(b.rng(), -3, 3), b1 = small_int(b.rng(), -3, 3);
+      const double a2 = small_int(b.rng(), -3, 3), b2 = small_int(b.rng(), -3, 3);
+      const Vec p = plus(plus(A, plus(B, A, -1), a1), plus(C, A, -1), b1);
+      const Vec q = plus(plus(A, plus(B, A, -1), a2), plus(C, A, -1), b2);
+      l = b.add_lpi(p, q, r, s, t);
+    }
+    const std::uint32_t PA = b.add_explicit(A), PB = b.add_explicit(B), PR = b.add_explicit(r);
+    b.orientation_2(L[0], L[1], L[2]);
+    b.orientation_3(L[0], L[1], L[2], PR);  // zero: collinear
+    b.orientation_3(L[0], L[1], PA, PB);    // zero: all in plane ABC
+    b.compare(L[0], L[1]);
+  }
+  return b.take();
+}
+
+inline Implicit_workload near_parallel_family(std::size_t cases, std::uint64_t seed) {
+  Implicit_builder b("near-parallel", seed);
+  while (b.cases() < cases) {
+    const Vec r = b.random_point(), s = b.random_point(), t = b.random_point(), p = b.random_point();
+    const Vec q = moved(plus(p, plus(s, r, -1)), small_int(b.rng(), 0, 2), nonzero_ulps(b.rng()));
+    const std::uint32_t L = b.add_lpi(p, q, r, s, t);
+    const std::uint32_t P = b.add_explicit(p), Q = b.add_explicit(q), R = b.add_explicit(r),
+                        S = b.add_explicit(s), T = b.add_explicit(t), C = b.add_explicit(b.random_point());
+    b.orientation_3(R, S, T, L);
+    b.orientation_3(P, Q, C, L);
+    b.orientation_3(R, S, C, L);
+    b.orientation_2(P, Q, L);
+    b.compare(L, C);
+  }
+  return b.take();
+}
+
+/// Three planes through one point a (or a few ulps from it).
+inline Implicit_workload tpi_point_family(std::size_t cases, std::uint64_t seed) {
+  Implicit_builder b("tpi-point", seed);
+  while (b.cases() < cases) {
+    const Vec a = b.random_point();
+    std::array<Vec, 9> v;
+    for (int i = 0; i < 3; ++i) v[3 * i] = a, v[3 * i + 1] = b.random_point(), v[3 * i + 2] = b.random_point();
+    const std::uint32_t T = b.add_tpi(v);
+    std::array<Vec, 9> w = v;
+    w[6] = moved(a, small_int(b.rng(), 0, 2), nonzero_ulps(b.rng()));
+    const std::uint32_t T2 = b.add_tpi(w);
+    const std::uint32_t A = b.add_explicit(a), B = b.add_explicit(v[1]), C = b.add_explicit(v[2]),
+                        D = b.add_explicit(b.random_point());
+    b.compare(T, A);
+    b.compare(T2, A);
+    b.orientation_3(A, B, C, T);   // zero: T = a
+    b.orientation_3(A, B, C, T2);  // a few ulps off the plane, or on it
+    b.orientation_3(B, C, D, T);
+    b.orientation_2(T, B, A);  // zero: T = a
+  }
+  return b.take();
+}
+
+/// Each coordinate a small multiple of a subnormal power of two, or
+/// 1 + k 2^-52. An eighth of the cases: exact arithmetic on 2^-1074 scales is
+/// about 20x slower than on the others (the oracle, GMP, Epeck).
+inline Implicit_workload subnormal_family(std::size_t cases, std::uint64_t seed) {
+  Implicit_builder b("subnormal", seed);
+  const std::size_t subnormal_cases = std::max<std::size_t>(64, cases / 8);
+  const auto coordinate = [&b] {
+    std::mt19937_64& g = b.rng();
+    if (g() % 3 == 0) return 1.0 + small_int(g, -8, 8) * 0x1p-52;
+    return std::ldexp(static_cast<double>(small_int(g, -7, 7)), small_int(g, -1074, -1040));
+  };
+  add_random_pool_and_cases(b, std::max<std::size_t>(64, subnormal_cases / 8), subnormal_cases,
+                            [&] { return Vec{coordinate(), coordinate(), coordinate()}; });
+  return b.take();
+}
+
 }  // namespace internal_workloads
 
 /// The implicit-point workloads, each with about `cases` predicate cases.
 inline std::vector<Implicit_workload> implicit_workloads(std::size_t cases, std::uint64_t seed = 1) {
   using namespace internal_workloads;
   std::vector<Implicit_workload> out;
-
-  const auto random_family = [&](const std::string& name, double scale, std::uint64_t s) {
-    Implicit_builder b(name, s);
-    const std::size_t n = std::max<std::size_t>(64, cases / 8);
-    for (std::size_t i = 0; i < n; ++i) {
-      switch (i % 3) {
-        case 0: b.add_explicit(b.random_point(scale)); break;
-        case 1:
-          b.add_lpi(b.random_point(scale), b.random_point(scale), b.random_point(scale), b.random_point(scale),
-                    b.random_point(scale));
-          break;
-        default: {
-          std::array<Vec, 9> v;
-          for (auto& x : v) x = b.random_point(scale);
-          b.add_tpi(v);
-        }
-      }
-    }
-    while (b.cases() < cases) {
-      b.orientation_3(b.random_index(), b.random_index(), b.random_index(), b.random_index());
-      b.orientation_2(b.random_index(), b.random_index(), b.random_index());
-      b.compare(b.random_index(), b.random_index());
-    }
-    return b.take();
-  };
-  out.push_back(random_family("random", 1, seed));
-
-  {  // on-plane
-    Implicit_builder b("on-plane", seed + 1);
-    while (b.cases() < cases) {
-      const Vec p = b.random_point(), q = b.random_point(), r = b.random_point(), s = b.random_point(),
-                t = b.random_point(), c = b.random_point();
-      const std::uint32_t L = b.add_lpi(p, q, r, s, t);
-      const std::uint32_t P = b.add_explicit(p), Q = b.add_explicit(q), R = b.add_explicit(r),
-                          S = b.add_explicit(s), T = b.add_explicit(t), C = b.add_explicit(c);
-      const int k = nonzero_ulps(b.rng());
-      const std::uint32_t R2 = b.add_explicit(moved(r, small_int(b.rng(), 0, 2), k));
-      const std::uint32_t P2 = b.add_explicit(moved(p, small_int(b.rng(), 0, 2), k));
-      const std::uint32_t N = b.add_explicit(nearest_lpi(p, q, r, s, t));
-      b.orientation_3(R, S, T, L);   // zero: on its plane
-      b.orientation_3(L, R, S, T);   // zero, the implicit point first
-      b.orientation_3(P, Q, C, L);   // zero: on its line
-      b.orientation_3(R2, S, T, L);  // a few ulps off
-      b.orientation_3(P2, Q, C, L);
-      b.orientation_2(P, Q, L);  // zero: collinear in every projection
-      b.orientation_2(L, P2, Q);
-      b.compare(L, N);  // a few ulps apart, or equal
-      b.compare(L, P);
-    }
-    out.push_back(b.take());
-  }
-
-  {  // same-point: lines pq and rs cross exactly at X
-    Implicit_builder b("same-point", seed + 2);
-    while (b.cases() < cases) {
-      const Vec X = b.dyadic_point(40);
-      const Vec d1 = b.small_vector(), d2 = b.small_vector();
-      if (d1[0] * d2[1] == d1[1] * d2[0] && d1[1] * d2[2] == d1[2] * d2[1] && d1[0] * d2[2] == d1[2] * d2[0])
-        continue;  // parallel directions
-      const double a = small_int(b.rng(), 1, 5), c = small_int(b.rng(), 1, 5);
-      const Vec p = plus(X, d1, -a), q = plus(X, d1, c), r = plus(X, d2, -c), s = plus(X, d2, a);
-      const Vec t = b.random_point(), t2 = b.random_point(), u = b.random_point();
-      const std::uint32_t L1 = b.add_lpi(p, q, r, s, t), L2 = b.add_lpi(p, q, r, s, t2),
-                          L3 = b.add_lpi(r, s, p, q, u);
-      const std::uint32_t XP = b.add_explicit(X), P = b.add_explicit(p), Q = b.add_explicit(q),
-                          R = b.add_explicit(r), U = b.add_explicit(u);
-      b.compare(L1, L2);
-      b.compare(L1, L3);
-      b.compare(L3, XP);
-      b.orientation_3(P, Q, R, L3);  // zero: X lies in the plane of the two lines
-      b.orientation_3(L1, L2, P, U);  // zero: two equal points
-      b.orientation_3(P, R, U, L1);   // X, p, r span the plane of the lines: nonzero in general
-      b.orientation_2(L1, P, R);  // X, p, r: a triangle of the crossing lines (nonzero unless degenerate)
-      b.orientation_2(L2, L3, P);  // zero: two equal points
-    }
-    out.push_back(b.take());
-  }
-
-  {  // collinear: lines of the plane ABC crossing the plane rst
-    Implicit_builder b("collinear", seed + 3);
-    while (b.cases() < cases) {
-      const Vec A = b.dyadic_point(30), B = plus(A, b.small_vector()), C = plus(A, b.small_vector());
-      const Vec r = b.random_point(), s = b.random_point(), t = b.random_point();
-      std::array<std::uint32_t, 3> L{};
-      for (auto& l : L) {
-        const double a1 = small_int(b.rng(), -3, 3), b1 = small_int(b.rng(), -3, 3);
-        const double a2 = small_int(b.rng(), -3, 3), b2 = small_int(b.rng(), -3, 3);
-        const Vec p = plus(plus(A, plus(B, A, -1), a1), plus(C, A, -1), b1);
-        const Vec q = plus(plus(A, plus(B, A, -1), a2), plus(C, A, -1), b2);
-        l = b.add_lpi(p, q, r, s, t);
-      }
-      const std::uint32_t PA = b.add_explicit(A), PB = b.add_explicit(B), PR = b.add_explicit(r);
-      b.orientation_2(L[0], L[1], L[2]);
-      b.orientation_3(L[0], L[1], L[2], PR);  // zero: collinear
-      b.orientation_3(L[0], L[1], PA, PB);    // zero: all in plane ABC
-      b.compare(L[0], L[1]);
-    }
-    out.push_back(b.take());
-  }
-
-  {  // near-parallel
-    Implicit_builder b("near-parallel", seed + 4);
-    while (b.cases() < cases) {
-      const Vec r = b.random_point(), s = b.random_point(), t = b.random_point(), p = b.random_point();
-      const Vec q = moved(plus(p, plus(s, r, -1)), small_int(b.rng(), 0, 2), nonzero_ulps(b.rng()));
-      const std::uint32_t L = b.add_lpi(p, q, r, s, t);
-      const std::uint32_t P = b.add_explicit(p), Q = b.add_explicit(q), R = b.add_explicit(r),
-                          S = b.add_explicit(s), T = b.add_explicit(t), C = b.add_explicit(b.random_point());
-      b.orientation_3(R, S, T, L);
-      b.orientation_3(P, Q, C, L);
-      b.orientation_3(R, S, C, L);
-      b.orientation_2(P, Q, L);
-      b.compare(L, C);
-    }
-    out.push_back(b.take());
-  }
-
-  {  // tpi-point: three planes through one point a (or a few ulps from it)
-    Implicit_builder b("tpi-point", seed + 5);
-    while (b.cases() < cases) {
-      const Vec a = b.random_point();
-      std::array<Vec, 9> v;
-      for (int i = 0; i < 3; ++i) v[3 * i] = a, v[3 * i + 1] = b.random_point(), v[3 * i + 2] = b.random_point();
-      const std::uint32_t T = b.add_tpi(v);
-      std::array<Vec, 9> w = v;
-      w[6] = moved(a, small_int(b.rng(), 0, 2), nonzero_ulps(b.rng()));
-      const std::uint32_t T2 = b.add_tpi(w);
-      const std::uint32_t A = b.add_explicit(a), B = b.add_explicit(v[1]), C = b.add_explicit(v[2]),
-                          D = b.add_explicit(b.random_point());
-      b.compare(T, A);
-      b.compare(T2, A);
-      b.orientation_3(A, B, C, T);   // zero: T = a
-      b.orientation_3(A, B, C, T2);  // a few ulps off the plane, or on it
-      b.orientation_3(B, C, D, T);
-      b.orientation_2(T, B, A);  // zero: T = a
-    }
-    out.push_back(b.take());
-  }
-
+  out.push_back(random_family("random", 1, seed, cases));
+  out.push_back(on_plane_family(cases, seed + 1));
+  out.push_back(same_point_family(cases, seed + 2));
+  out.push_back(collinear_family(cases, seed + 3));
+  out.push_back(near_parallel_family(cases, seed + 4));
+  out.push_back(tpi_point_family(cases, seed + 5));
   const int exponents[] = {-700, -300, 300, 600};
   for (int i = 0; i < 4; ++i)
     out.push_back(random_family("magnitudes 2^" + std::to_string(exponents[i]), std::ldexp(1.0, exponents[i]),
-                                seed + 10 + i));
-
-  {  // subnormal: each coordinate a small multiple of a subnormal power of two, or 1 + k 2^-52.
-     // An eighth of the cases: exact arithmetic on 2^-1074 scales is about 20x
-     // slower than on the others (the oracle, GMP, Epeck).
-    Implicit_builder b("subnormal", seed + 20);
-    const std::size_t subnormal_cases = std::max<std::size_t>(64, cases / 8);
-    const auto coordinate = [&b] {
-      std::mt19937_64& g = b.rng();
-      if (g() % 3 == 0) return 1.0 + small_int(g, -8, 8) * 0x1p-52;
-      return std::ldexp(static_cast<double>(small_int(g, -7, 7)), small_int(g, -1074, -1040));
-    };
-    const auto point = [&] { return Vec{coordinate(), coordinate(), coordinate()}; };
-    const std::size_t n = std::max<std::size_t>(64, subnormal_cases / 8);
-    for (std::size_t i = 0; i < n; ++i) {
-      switch (i % 3) {
-        case 0: b.add_explicit(point()); break;
-        case 1: b.add_lpi(point(), point(), point(), point(), point()); break;
-        default: {
-          std::array<Vec, 9> v;
-          for (auto& x : v) x = point();
-          b.add_tpi(v);
-        }
-      }
-    }
-    while (b.cases() < subnormal_cases) {
-      b.orientation_3(b.random_index(), b.random_index(), b.random_index(), b.random_index());
-      b.orientation_2(b.random_index(), b.random_index(), b.random_index());
-      b.compare(b.random_index(), b.random_index());
-    }
-    out.push_back(b.take());
-  }
+                                seed + 10 + i, cases));
+  out.push_back(subnormal_family(cases, seed + 20));
   return out;
 }
 

@@ -113,6 +113,188 @@ class Segment_grid {
   std::size_t nx_ = 1, ny_ = 1;
 };
 
+/// central_mesh's removal rules as steps over one patch (file comment); each
+/// step clears `keep` of the triangles it removes and counts them.
+template <class K>
+class Central_mesh_builder {
+ public:
+  Central_mesh_builder(std::span<const Triangle> faces, std::span<const Point_2<double>> uv, const Mesh_topology& topology,
+                       const std::vector<std::vector<Point_2<double>>>& boundary, const Central_mesh_options& options,
+                       const K& k)
+      : faces_(faces), uv_(uv), topology_(topology), boundary_(boundary), options_(options), k_(k),
+        nf_(faces.size()), nv_(uv.size()) {
+    c_.keep.assign(nf_, 1);
+    measure_edge_lengths();
+  }
+
+  Central_mesh build() && {
+    remove_periphery();
+    const Segment_grid grid(boundary_, 2 * median_edge_);
+    remove_outside(grid);
+    remove_close_to_boundary(grid);
+    remove_invalid();
+    remove_non_manifold_corners();
+    return std::move(c_);
+  }
+
+ private:
+  void remove(Index f, std::size_t& counter) {
+    if (c_.keep[f]) c_.keep[f] = 0, ++counter;
+  }
+
+  /// The mean edge length per vertex, and the median edge length.
+  void measure_edge_lengths() {
+    mean_edge_.assign(nv_, 0.0);
+    std::vector<int> degree(nv_, 0);
+    std::vector<double> lengths;
+    for (const Triangle& t : faces_)
+      for (int i = 0; i < 3; ++i) {
+        const double l = std::hypot(uv_[t[i]].x - uv_[t[(i + 1) % 3]].x, uv_[t[i]].y - uv_[t[(i + 1) % 3]].y);
+        mean_edge_[t[i]] += l, mean_edge_[t[(i + 1) % 3]] += l, ++degree[t[i]], ++degree[t[(i + 1) % 3]];
+        lengths.push_back(l);
+      }
+    for (std::size_t v = 0; v < nv_; ++v) mean_edge_[v] = degree[v] ? mean_edge_[v] / degree[v] : 0.0;
+    std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
+    median_edge_ = lengths.empty() ? 1.0 : lengths[lengths.size() / 2];
+  }
+
+  /// 1. Rings around the mesh boundary.
+  void remove_periphery() {
+    std::vector<int> ring(nv_, -1);
+    std::queue<Index> queue;
+    for (Index v = 0; v < nv_; ++v)
+      if (!topology_.is_isolated(v) && topology_.is_boundary_vertex(v)) ring[v] = 0, queue.push(v);
+    while (!queue.empty()) {
+      const Index v = queue.front();
+      queue.pop();
+      if (ring[v] + 1 >= options_.layers) continue;
+      for (Index w : topology_.vertex_ring(v))
+        if (ring[w] < 0) ring[w] = ring[v] + 1, queue.push(w);
+    }
+    for (Index f = 0; f < nf_; ++f)
+      for (Index v : faces_[f])
+        if (ring[v] >= 0 && ring[v] < std::max(1, options_.layers)) remove(f, c_.removed_periphery);
+  }
+
+  /// 2. Edges meeting dR; corners outside it.
+  void remove_outside(const Segment_grid& grid) {
+    const std::vector<char> crossing = crossing_edges(grid);
+    Union_find<Index> sides(nv_);  // vertices joined by edges that cross no boundary
+    for (Index e = 0; e < topology_.number_of_edges(); ++e)
+      if (!crossing[e]) {
+        const Edge ab = topology_.edge_vertices(e);
+        sides.unite(ab.a, ab.b);
+      }
+    std::vector<signed char> inside(nv_, -1);  // per component root: 1 inside, 0 not (or undecided)
+    for (Index v = 0; v < nv_; ++v) {
+      const Index r = sides.find(v);
+      if (inside[r] < 0) inside[r] = is_certainly_inside(uv_[v]) ? 1 : 0;
+    }
+    for (Index f = 0; f < nf_; ++f) {
+      bool out = false;
+      for (int i = 0; i < 3; ++i) {
+        out = out || inside[sides.find(faces_[f][i])] != 1;
+        const Index he = 3 * f + static_cast<Index>(i);
+        out = out || crossing[topology_.edge(he)];
+      }
+      if (out) remove(f, c_.removed_outside);
+    }
+  }
+
+  /// The edges that meet dR, or may (certified segment tests).
+  std::vector<char> crossing_edges(const Segment_grid& grid) const {
+    std::vector<char> crossing(topology_.number_of_edges(), 0);
+    for (Index e = 0; e < topology_.number_of_edges(); ++e) {
+      const Edge ab = topology_.edge_vertices(e);
+      const Point_2<double>&a = uv_[ab.a], &b = uv_[ab.b];
+      grid.near_box(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y), [&](std::uint32_t s) {
+        if (crossing[e]) return;
+        const auto hit = segments_intersect(k_, a, b, grid.segments()[s].a, grid.segments()[s].b);
+        if (!hit || *hit) crossing[e] = 1;
+      });
+    }
+    return crossing;
+  }
+
+  /// Whether p certainly lies inside dR (a certified, non-zero winding number).
+  bool is_certainly_inside(const Point_2<double>& p) const {
+    int winding = 0;
+    for (const auto& loop : boundary_) {
+      const auto w = Trimmed_surface::winding_number(loop, p, k_);
+      if (!w || *w == Trimmed_surface::on_boundary_code) return false;
+      winding += *w;
+    }
+    return winding != 0;
+  }
+
+  /// 3. Clearance from dR.
+  void remove_close_to_boundary(const Segment_grid& grid) {
+    for (Index f = 0; f < nf_; ++f) {
+      if (!c_.keep[f]) continue;
+      for (Index v : faces_[f]) {
+        const double r = options_.clearance * mean_edge_[v];
+        if (grid.distance_within(uv_[v], r) < r) {
+          remove(f, c_.removed_clearance);
+          break;
+        }
+      }
+    }
+  }
+
+  /// 4. Orientation and overlaps.
+  void remove_invalid() {
+    std::vector<Triangle> kept_faces;
+    std::vector<Index> kept_id;
+    for (Index f = 0; f < nf_; ++f)
+      if (c_.keep[f]) {
+        if (!certainly(uv_orientation(k_, uv_[faces_[f][0]], uv_[faces_[f][1]], uv_[faces_[f][2]]),
+                       Certified_sign::positive))
+          remove(f, c_.removed_invalid);
+        else kept_faces.push_back(faces_[f]), kept_id.push_back(f);
+      }
+    const Overlap_report overlaps = uv_overlaps<K>(kept_faces, uv_, k_);
+    for (const auto& list : {overlaps.overlapping, overlaps.undecided})
+      for (const auto& [a, b] : list) remove(kept_id[a], c_.removed_invalid), remove(kept_id[b], c_.removed_invalid);
+  }
+
+  /// 5. Non-manifold corners: a vertex with more than two boundary edges of
+  /// the kept set sits where several fans meet.
+  void remove_non_manifold_corners() {
+    for (bool changed = true; changed;) {
+      changed = false;
+      std::vector<int> boundary_edges(nv_, 0);
+      for (Index e = 0; e < topology_.number_of_edges(); ++e) {
+        const Index h0 = topology_.edge_halfedge(e), h1 = topology_.opposite(h0);
+        const int kept = c_.keep[Mesh_topology::face(h0)] + (h1 == invalid_index ? 0 : c_.keep[Mesh_topology::face(h1)]);
+        if (kept == 1) {
+          const Edge ab = topology_.edge_vertices(e);
+          ++boundary_edges[ab.a], ++boundary_edges[ab.b];
+        }
+      }
+      for (Index f = 0; f < nf_; ++f) {
+        if (!c_.keep[f]) continue;
+        for (Index v : faces_[f])
+          if (boundary_edges[v] > 2) {
+            remove(f, c_.removed_non_manifold);
+            changed = true;
+            break;
+          }
+      }
+    }
+  }
+
+  std::span<const Triangle> faces_;
+  std::span<const Point_2<double>> uv_;
+  const Mesh_topology& topology_;
+  const std::vector<std::vector<Point_2<double>>>& boundary_;
+  const Central_mesh_options& options_;
+  const K& k_;
+  std::size_t nf_, nv_;
+  Central_mesh c_;
+  std::vector<double> mean_edge_;  ///< per vertex, in (u,v)
+  double median_edge_ = 1;
+};
+
 }  // namespace internal
 
 /// \brief The central mesh of a projected mesh patch (file comment).
@@ -123,136 +305,7 @@ template <OrientationKernel_2 K>
 Central_mesh central_mesh(std::span<const Triangle> faces, std::span<const Point_2<double>> uv, const Mesh_topology& topology,
                           const std::vector<std::vector<Point_2<double>>>& boundary, const Central_mesh_options& options = {},
                           const K& k = K{}) {
-  const std::size_t nf = faces.size(), nv = uv.size();
-  Central_mesh c;
-  c.keep.assign(nf, 1);
-  const auto remove = [&](Index f, std::size_t& counter) {
-    if (c.keep[f]) c.keep[f] = 0, ++counter;
-  };
-  // Mean edge length per vertex.
-  std::vector<double> h(nv, 0.0);
-  std::vector<int> degree(nv, 0);
-  std::vector<double> lengths;
-  for (const Triangle& t : faces)
-    for (int i = 0; i < 3; ++i) {
-      const double l = std::hypot(uv[t[i]].x - uv[t[(i + 1) % 3]].x, uv[t[i]].y - uv[t[(i + 1) % 3]].y);
-      h[t[i]] += l, h[t[(i + 1) % 3]] += l, ++degree[t[i]], ++degree[t[(i + 1) % 3]];
-      lengths.push_back(l);
-    }
-  for (std::size_t v = 0; v < nv; ++v) h[v] = degree[v] ? h[v] / degree[v] : 0.0;
-  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
-  const double median = lengths.empty() ? 1.0 : lengths[lengths.size() / 2];
-
-  // 1. Rings around the mesh boundary.
-  std::vector<int> ring(nv, -1);
-  std::queue<Index> queue;
-  for (Index v = 0; v < nv; ++v)
-    if (!topology.is_isolated(v) && topology.is_boundary_vertex(v)) ring[v] = 0, queue.push(v);
-  while (!queue.empty()) {
-    const Index v = queue.front();
-    queue.pop();
-    if (ring[v] + 1 >= options.layers) continue;
-    for (Index w : topology.vertex_ring(v))
-      if (ring[w] < 0) ring[w] = ring[v] + 1, queue.push(w);
-  }
-  for (Index f = 0; f < nf; ++f)
-    for (Index v : faces[f])
-      if (ring[v] >= 0 && ring[v] < std::max(1, options.layers)) remove(f, c.removed_periphery);
-
-  // 2. Edges meeting dR; corners outside it.
-  const internal::Segment_grid grid(boundary, 2 * median);
-  std::vector<char> crossing(topology.number_of_edges(), 0);
-  for (Index e = 0; e < topology.number_of_edges(); ++e) {
-    const Edge ab = topology.edge_vertices(e);
-    const Point_2<double>&a = uv[ab.a], &b = uv[ab.b];
-    grid.near_box(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y), [&](std::uint32_t s) {
-      if (crossing[e]) return;
-      const auto hit = internal::segments_intersect(k, a, b, grid.segments()[s].a, grid.segments()[s].b);
-      if (!hit || *hit) crossing[e] = 1;
-    });
-  }
-  internal::Union_find<Index> sides(nv);  // vertices joined by edges that cross no boundary
-  for (Index e = 0; e < topology.number_of_edges(); ++e)
-    if (!crossing[e]) {
-      const Edge ab = topology.edge_vertices(e);
-      sides.unite(ab.a, ab.b);
-    }
-  std::vector<signed char> inside(nv, -1);  // per component root: 1 inside, 0 not (or undecided)
-  for (Index v = 0; v < nv; ++v) {
-    const Index r = sides.find(v);
-    if (inside[r] >= 0) continue;
-    int winding = 0;
-    bool decided = true;
-    for (const auto& loop : boundary) {
-      const auto w = Trimmed_surface::winding_number(loop, uv[v], k);
-      if (!w || *w == Trimmed_surface::on_boundary_code) {
-        decided = false;
-        break;
-      }
-      winding += *w;
-    }
-    inside[r] = decided && winding != 0 ? 1 : 0;
-  }
-  for (Index f = 0; f < nf; ++f) {
-    bool out = false;
-    for (int i = 0; i < 3; ++i) {
-      out = out || inside[sides.find(faces[f][i])] != 1;
-      const Index he = 3 * f + static_cast<Index>(i);
-      out = out || crossing[topology.edge(he)];
-    }
-    if (out) remove(f, c.removed_outside);
-  }
-
-  // 3. Clearance from dR.
-  for (Index f = 0; f < nf; ++f) {
-    if (!c.keep[f]) continue;
-    for (Index v : faces[f]) {
-      const double r = options.clearance * h[v];
-      if (grid.distance_within(uv[v], r) < r) {
-        remove(f, c.removed_clearance);
-        break;
-      }
-    }
-  }
-
-  // 4. Orientation and overlaps.
-  std::vector<Triangle> kept_faces;
-  std::vector<Index> kept_id;
-  for (Index f = 0; f < nf; ++f)
-    if (c.keep[f]) {
-      if (!certainly(internal::uv_orientation(k, uv[faces[f][0]], uv[faces[f][1]], uv[faces[f][2]]),
-                     Certified_sign::positive))
-        remove(f, c.removed_invalid);
-      else kept_faces.push_back(faces[f]), kept_id.push_back(f);
-    }
-  const Overlap_report overlaps = uv_overlaps<K>(kept_faces, uv, k);
-  for (const auto& list : {overlaps.overlapping, overlaps.undecided})
-    for (const auto& [a, b] : list) remove(kept_id[a], c.removed_invalid), remove(kept_id[b], c.removed_invalid);
-
-  // 5. Non-manifold corners: a vertex with more than two boundary edges of
-  // the kept set sits where several fans meet.
-  for (bool changed = true; changed;) {
-    changed = false;
-    std::vector<int> boundary_edges(nv, 0);
-    for (Index e = 0; e < topology.number_of_edges(); ++e) {
-      const Index h0 = topology.edge_halfedge(e), h1 = topology.opposite(h0);
-      const int kept = c.keep[Mesh_topology::face(h0)] + (h1 == invalid_index ? 0 : c.keep[Mesh_topology::face(h1)]);
-      if (kept == 1) {
-        const Edge ab = topology.edge_vertices(e);
-        ++boundary_edges[ab.a], ++boundary_edges[ab.b];
-      }
-    }
-    for (Index f = 0; f < nf; ++f) {
-      if (!c.keep[f]) continue;
-      for (Index v : faces[f])
-        if (boundary_edges[v] > 2) {
-          remove(f, c.removed_non_manifold);
-          changed = true;
-          break;
-        }
-    }
-  }
-  return c;
+  return internal::Central_mesh_builder<K>(faces, uv, topology, boundary, options, k).build();
 }
 
 }  // namespace relgeo

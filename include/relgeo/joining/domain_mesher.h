@@ -25,6 +25,7 @@
 #include <limits>
 #include <queue>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "relgeo/core/errors.h"
@@ -56,19 +57,11 @@ inline double triangle_min_angle(const Point_2<double>& a, const Point_2<double>
   return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)}) * 180.0 / M_PI;
 }
 
-}  // namespace internal
-
-/// \brief Triangulates the region of odd nesting depth of `loops` (each a
-/// closed polyline, last point != first) by constrained Delaunay refinement
-/// (Ruppert; CGAL::Delaunay_mesher_2 with Delaunay_mesh_size_criteria_2).
-/// \throws Invalid_input for a loop of fewer than 3 points, non-finite
-/// points, repeated points, or crossing loops.
-inline Domain_mesh mesh_domain(const std::vector<std::vector<Point_2<double>>>& loops,
-                               const Domain_mesh_options& options = {}) {
-  using namespace internal;
+/// The loops' points inserted into `cdt`, each vertex knowing its (loop,
+/// index), then their segments as constraints.
+inline void insert_loops(Mesh_2_cdt& cdt, const std::vector<std::vector<Point_2<double>>>& loops) {
   using CDT = Mesh_2_cdt;
   using P = Mesh_2_kernel::Point_2;
-  CDT cdt;
   std::vector<std::vector<CDT::Vertex_handle>> handles(loops.size());
   for (std::size_t l = 0; l < loops.size(); ++l) {
     if (loops[l].size() < 3) throw Invalid_input("mesh_domain: loop " + std::to_string(l) + " has fewer than 3 points");
@@ -89,42 +82,45 @@ inline Domain_mesh mesh_domain(const std::vector<std::vector<Point_2<double>>>& 
   } catch (const CDT::Intersection_of_constraints_exception&) {
     throw Invalid_input("mesh_domain: the boundary loops cross each other");
   }
-  // Nesting depth by breadth-first search across constrained edges.
-  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(false);
-  {
-    std::vector<CDT::Face_handle> level{cdt.infinite_face()};
-    std::unordered_map<CDT::Face_handle, int> depth;  // visited faces
-    depth[cdt.infinite_face()] = 0;
-    int d = 0;
-    while (!level.empty()) {
-      std::vector<CDT::Face_handle> next;
-      std::queue<CDT::Face_handle> queue;
-      for (auto f : level) queue.push(f);
-      while (!queue.empty()) {
-        const CDT::Face_handle f = queue.front();
-        queue.pop();
-        f->set_in_domain(d % 2 == 1);
-        for (int i = 0; i < 3; ++i) {
-          const CDT::Face_handle n = f->neighbor(i);
-          if (depth.count(n)) continue;
-          if (cdt.is_constrained({f, i})) next.push_back(n);
-          else depth[n] = d, queue.push(n);
-        }
-      }
-      ++d;
-      level.clear();
-      for (auto f : next)
-        if (!depth.count(f)) depth[f] = d, level.push_back(f);
-    }
-  }
-  using Criteria = CGAL::Delaunay_mesh_size_criteria_2<CDT>;
-  CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, Criteria(options.shape_bound, options.max_edge_length));
-  mesher.init(true);  // keep our marks (the infinite component stays outside)
-  mesher.refine_mesh();
+}
 
+/// Marks the faces of odd nesting depth as in the domain: breadth-first
+/// search from the infinite face, one level deeper across each constrained
+/// edge.
+inline void mark_odd_depth_faces(Mesh_2_cdt& cdt) {
+  using CDT = Mesh_2_cdt;
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(false);
+  std::vector<CDT::Face_handle> level{cdt.infinite_face()};
+  std::unordered_map<CDT::Face_handle, int> depth;  // visited faces
+  depth[cdt.infinite_face()] = 0;
+  int d = 0;
+  while (!level.empty()) {
+    std::vector<CDT::Face_handle> next;
+    std::queue<CDT::Face_handle> queue;
+    for (auto f : level) queue.push(f);
+    while (!queue.empty()) {
+      const CDT::Face_handle f = queue.front();
+      queue.pop();
+      f->set_in_domain(d % 2 == 1);
+      for (int i = 0; i < 3; ++i) {
+        const CDT::Face_handle n = f->neighbor(i);
+        if (depth.count(n)) continue;
+        if (cdt.is_constrained({f, i})) next.push_back(n);
+        else depth[n] = d, queue.push(n);
+      }
+    }
+    ++d;
+    level.clear();
+    for (auto f : next)
+      if (!depth.count(f)) depth[f] = d, level.push_back(f);
+  }
+}
+
+/// The triangles of the domain (counter-clockwise, as CGAL's) and their
+/// vertices; `id` receives each vertex's index in the result.
+inline Domain_mesh domain_triangles(const Mesh_2_cdt& cdt, std::unordered_map<Mesh_2_cdt::Vertex_handle, Index>& id) {
   Domain_mesh out;
-  std::unordered_map<CDT::Vertex_handle, Index> id;
-  const auto vertex_id = [&](CDT::Vertex_handle v) {
+  const auto vertex_id = [&](Mesh_2_cdt::Vertex_handle v) {
     auto [it, inserted] = id.emplace(v, static_cast<Index>(out.vertices.size()));
     if (inserted) {
       Domain_vertex dv;
@@ -142,8 +138,39 @@ inline Domain_mesh mesh_domain(const std::vector<std::vector<Point_2<double>>>& 
     out.min_angle_degrees = std::min(out.min_angle_degrees,
                                      triangle_min_angle(out.vertices[t[0]].uv, out.vertices[t[1]].uv, out.vertices[t[2]].uv));
   }
-  // Steiner points on input segments: follow the constrained edges from each
-  // new vertex to the input points at both ends.
+  return out;
+}
+
+/// The input vertex reached by walking along the constraint from `prev`
+/// through `cur` (Steiner points have loop < 0).
+inline Mesh_2_cdt::Vertex_handle walk_constraint(const Mesh_2_cdt& cdt, Mesh_2_cdt::Vertex_handle prev,
+                                                 Mesh_2_cdt::Vertex_handle cur) {
+  using CDT = Mesh_2_cdt;
+  while (cur->info().loop < 0) {
+    CDT::Vertex_handle step = cur;
+    auto ce = cdt.incident_edges(cur), cdone = ce;
+    do {
+      if (cdt.is_constrained(*ce)) {
+        const CDT::Vertex_handle a = ce->first->vertex(CDT::cw(ce->second)), b = ce->first->vertex(CDT::ccw(ce->second));
+        const CDT::Vertex_handle other = a == cur ? b : a;
+        if (other != prev) {
+          step = other;
+          break;
+        }
+      }
+    } while (++ce != cdone);
+    if (step == cur) break;
+    prev = cur, cur = step;
+  }
+  return cur;
+}
+
+/// Steiner points on input segments: follows the constrained edges from
+/// each new vertex to the input points at both ends, and records the
+/// segment and the parameter t on it.
+inline void locate_steiner_points(const Mesh_2_cdt& cdt, const std::unordered_map<Mesh_2_cdt::Vertex_handle, Index>& id,
+                                  const std::vector<std::vector<Point_2<double>>>& loops, Domain_mesh& out) {
+  using CDT = Mesh_2_cdt;
   for (const auto& [v, i] : id) {
     if (v->info().loop >= 0) continue;
     std::vector<CDT::Vertex_handle> ends;
@@ -152,26 +179,9 @@ inline Domain_mesh mesh_domain(const std::vector<std::vector<Point_2<double>>>& 
     do {
       if (cdt.is_constrained(*e)) {
         // Walk along the constraint away from v until an input vertex.
-        CDT::Vertex_handle prev = v;
-        CDT::Vertex_handle cur = e->first->vertex(CDT::cw(e->second)) == v ? e->first->vertex(CDT::ccw(e->second))
-                                                                            : e->first->vertex(CDT::cw(e->second));
-        while (cur->info().loop < 0) {
-          CDT::Vertex_handle step = cur;
-          auto ce = cdt.incident_edges(cur), cdone = ce;
-          do {
-            if (cdt.is_constrained(*ce)) {
-              const CDT::Vertex_handle a = ce->first->vertex(CDT::cw(ce->second)), b = ce->first->vertex(CDT::ccw(ce->second));
-              const CDT::Vertex_handle other = a == cur ? b : a;
-              if (other != prev) {
-                step = other;
-                break;
-              }
-            }
-          } while (++ce != cdone);
-          if (step == cur) break;
-          prev = cur, cur = step;
-        }
-        ends.push_back(cur);
+        const CDT::Vertex_handle next = e->first->vertex(CDT::cw(e->second)) == v ? e->first->vertex(CDT::ccw(e->second))
+                                                                                 : e->first->vertex(CDT::cw(e->second));
+        ends.push_back(walk_constraint(cdt, v, next));
       }
     } while (++e != done && ends.size() < 2);
     if (ends.size() != 2 || ends[0]->info().loop < 0 || ends[0]->info().loop != ends[1]->info().loop) continue;
@@ -187,6 +197,28 @@ inline Domain_mesh mesh_domain(const std::vector<std::vector<Point_2<double>>>& 
     dv.segment_loop = l, dv.segment = a;
     dv.t = std::clamp(((dv.uv.x - pa.x) * dx + (dv.uv.y - pa.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
   }
+}
+
+}  // namespace internal
+
+/// \brief Triangulates the region of odd nesting depth of `loops` (each a
+/// closed polyline, last point != first) by constrained Delaunay refinement
+/// (Ruppert; CGAL::Delaunay_mesher_2 with Delaunay_mesh_size_criteria_2).
+/// \throws Invalid_input for a loop of fewer than 3 points, non-finite
+/// points, repeated points, or crossing loops.
+inline Domain_mesh mesh_domain(const std::vector<std::vector<Point_2<double>>>& loops,
+                               const Domain_mesh_options& options = {}) {
+  using namespace internal;
+  Mesh_2_cdt cdt;
+  insert_loops(cdt, loops);
+  mark_odd_depth_faces(cdt);
+  using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Mesh_2_cdt>;
+  CGAL::Delaunay_mesher_2<Mesh_2_cdt, Criteria> mesher(cdt, Criteria(options.shape_bound, options.max_edge_length));
+  mesher.init(true);  // keep our marks (the infinite component stays outside)
+  mesher.refine_mesh();
+  std::unordered_map<Mesh_2_cdt::Vertex_handle, Index> id;
+  Domain_mesh out = domain_triangles(cdt, id);
+  locate_steiner_points(cdt, id, loops, out);
   return out;
 }
 

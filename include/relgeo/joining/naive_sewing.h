@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "relgeo/joining/internal/join_steps.h"
+#include "relgeo/joining/internal/sewn_measures.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 
@@ -177,42 +178,17 @@ void measure_sewn(std::vector<Face_state>& faces, const std::vector<Sewing_edit>
   Join_report& report = result.report;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     Face_state& s = faces[f];
-    Join_face_report& r = s.report;
     Height_field h;
     for (Index v = 0; v < edits[f].points.size(); ++v) {
       const std::optional<Point_2<double>> hint = v < s.input.uv.size() ? std::optional(s.input.uv[v]) : std::nullopt;
       const Surface_projection p = s.projector->project(edits[f].points[v], hint);
       h.uv.push_back(p.uv), h.height.push_back(p.height);
     }
-    const Patch_errors after = patch_errors(face_triangles[f], h);
-    r.after = r.after_reprojected = {after.absolute_error, after.normal_vector_error};
-    const Orientation_report o = uv_orientations<K>(face_triangles[f], h.uv, Certified_sign::positive, k);
-    r.orientation_after = {o.positive, o.flipped, o.degenerate, o.undecided};
-    const Overlap_report ov = uv_overlaps<K>(face_triangles[f], h.uv, k);
-    r.overlaps_after = ov.overlapping.size(), r.overlaps_undecided_after = ov.undecided.size();
-    r.central_triangles = s.triangles.size();
-    r.output_vertices = h.uv.size(), r.output_triangles = face_triangles[f].size();
-    r.guarantees_hold = o.all_positive() && ov.is_embedding();
-    report.flipped_triangles += o.flipped;
-    report.faces.push_back(r);
+    s.report.central_triangles = s.triangles.size();
+    measure_sewn_face(s, face_triangles[f], h, report, k);
   }
-  const Triangle_mesh<Point_3<double>>& m = result.mesh;
-  report.vertices = m.vertices.size(), report.triangles = m.faces.size();
-  std::vector<Mesh_issue> issues;
-  const Mesh_topology topo = Mesh_topology::build_checked(m.vertices.size(), m.faces, issues);
-  for (const Mesh_issue& i : issues) {
-    report.non_manifold_edges += i.defect == Mesh_defect::non_manifold_edge;
-    report.inconsistent_orientations += i.defect == Mesh_defect::inconsistent_orientation;
-  }
-  for (Index e = 0; e < topo.number_of_edges(); ++e)
-    if (topo.is_boundary_edge(e)) {
-      ++report.boundary_edges;
-      const Edge ab = topo.edge_vertices(e);
-      report.seam_boundary_edges += seam_vertices.count(ab.a) && seam_vertices.count(ab.b);
-    }
-  report.conforming = report.non_manifold_edges == 0 && report.inconsistent_orientations == 0;
-  report.watertight_seams = report.seam_boundary_edges == 0;
-  report.guarantees_hold = std::all_of(report.faces.begin(), report.faces.end(), [](const auto& r) { return r.guarantees_hold; });
+  measure_sewn_mesh(
+      result.mesh, [&](Index a, Index b) { return seam_vertices.count(a) && seam_vertices.count(b); }, report);
 }
 
 }  // namespace internal::join
@@ -225,12 +201,8 @@ Join_result naive_sewing(const Surface_model& model, const std::vector<Triangle_
                          const K& k = K{}, const Join_options& options = {}) {
   using namespace internal::join;
   const internal::Stopwatch start;
-  Join_result result;
+  Join_result result = sewing_result("naive_sewing", "naive-midpoint", K::name(), model, meshes.size());
   Join_report& report = result.report;
-  report.method = "naive-midpoint", report.kernel = K::name();
-  if (model.faces.empty() || meshes.size() != model.faces.size())
-    throw Joining_input_error("naive_sewing: " + std::to_string(meshes.size()) + " meshes for " +
-                              std::to_string(model.faces.size()) + " faces");
   const auto step = [&](const char* name, auto&& f) {
     const internal::Stopwatch t;
     f();

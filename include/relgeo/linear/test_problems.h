@@ -1,9 +1,10 @@
 // relgeo/linear/test_problems.h — the linear systems of the thesis (Sec. 3.2):
-// its 2x2 example and Hilbert matrices.
+// its 2x2 example and Hilbert matrices; and random systems.
 #pragma once
 
 #include <gmpxx.h>
 
+#include <random>
 #include <string>
 
 #include "relgeo/core/errors.h"
@@ -65,6 +66,18 @@ template <class S>
 Linear_system<S> stored_hilbert_system(Eigen::Index n) {
   const Linear_system<mpq_class> h = hilbert_system(n);
   return {from_rational_matrix<S>(h.a), from_rational_vector<S>(h.b)};
+}
+
+/// An n x n system in double with entries uniform in [-1, 1], drawn from
+/// std::mt19937_64(seed): A column by column, then b.
+inline Linear_system<double> random_system(Eigen::Index n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> d(-1, 1);
+  Linear_system<double> s{Dense_matrix<double>(n, n), Dense_vector<double>(n)};
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index i = 0; i < n; ++i) s.a(i, j) = d(rng);
+  for (Eigen::Index i = 0; i < n; ++i) s.b(i) = d(rng);
+  return s;
 }
 
 }  // namespace relgeo

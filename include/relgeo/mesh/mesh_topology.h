@@ -165,6 +165,15 @@ class Mesh_topology {
   }
 
  private:
+  // The steps of build_checked, in order; each appends what it finds to `issues`.
+  static std::vector<char> check_faces(std::size_t nv, std::span<const Triangle> faces, std::vector<Mesh_issue>& issues);
+  std::vector<Index> sort_outgoing(std::size_t nv, const std::vector<char>& face_ok);
+  std::vector<char> match_opposites(std::size_t nv, const std::vector<char>& face_ok, const std::vector<Index>& out_target,
+                                    std::vector<Mesh_issue>& issues);
+  void number_edges(const std::vector<char>& face_ok);
+  void find_walk_starts(const std::vector<char>& on_bad_edge, std::vector<Mesh_issue>& issues);
+  Index count_fans(Index v) const;
+
   std::vector<Triangle> faces_;
   std::vector<Index> opposite_, edge_of_, edge_halfedge_;
   std::vector<Index> out_begin_, out_;  // outgoing half-edges of each vertex (CSR)
@@ -236,7 +245,19 @@ inline Mesh_topology Mesh_topology::build_checked(std::size_t nv, std::span<cons
     throw Invalid_input("Mesh_topology: mesh too large for 32-bit indices");
   Mesh_topology t;
   t.faces_.assign(faces.begin(), faces.end());
-  const Index nf = static_cast<Index>(faces.size()), nh = 3 * nf;
+  const std::vector<char> face_ok = check_faces(nv, faces, issues);
+  const std::vector<Index> out_target = t.sort_outgoing(nv, face_ok);
+  const std::vector<char> on_bad_edge = t.match_opposites(nv, face_ok, out_target, issues);
+  t.number_edges(face_ok);
+  t.find_walk_starts(on_bad_edge, issues);
+  return t;
+}
+
+/// Which faces can take part in the topology: every index in range, three
+/// distinct vertices.
+inline std::vector<char> Mesh_topology::check_faces(std::size_t nv, std::span<const Triangle> faces,
+                                                    std::vector<Mesh_issue>& issues) {
+  const Index nf = static_cast<Index>(faces.size());
   std::vector<char> face_ok(nf, 1);
   for (Index f = 0; f < nf; ++f) {
     const Triangle& tr = faces[f];
@@ -250,40 +271,53 @@ inline Mesh_topology Mesh_topology::build_checked(std::size_t nv, std::span<cons
       face_ok[f] = 0;
     }
   }
-  // Outgoing half-edges per vertex (counting sort by source).
-  t.out_begin_.assign(nv + 1, 0);
+  return face_ok;
+}
+
+/// Outgoing half-edges per vertex (counting sort by source); returns the
+/// targets of the outgoing half-edges, stored beside them: the search for
+/// opposites then reads two short contiguous runs per half-edge instead of a
+/// face per candidate.
+inline std::vector<Index> Mesh_topology::sort_outgoing(std::size_t nv, const std::vector<char>& face_ok) {
+  const Index nf = static_cast<Index>(faces_.size());
+  out_begin_.assign(nv + 1, 0);
   for (Index f = 0; f < nf; ++f)
     if (face_ok[f])
-      for (Index v : faces[f]) ++t.out_begin_[v + 1];
-  for (std::size_t v = 0; v < nv; ++v) t.out_begin_[v + 1] += t.out_begin_[v];
-  t.out_.resize(t.out_begin_[nv]);
-  // The targets of the outgoing half-edges, stored beside them: the search
-  // for opposites below then reads two short contiguous runs per half-edge
-  // instead of a face per candidate.
-  std::vector<Index> out_target(t.out_.size());
-  {
-    std::vector<Index> fill(t.out_begin_.begin(), t.out_begin_.end() - 1);
-    for (Index f = 0; f < nf; ++f)
-      if (face_ok[f])
-        for (Index i = 0; i < 3; ++i) {
-          const Index slot = fill[faces[f][i]]++;
-          t.out_[slot] = 3 * f + i;
-          out_target[slot] = faces[f][i == 2 ? 0 : i + 1];
-        }
-  }
-  // Opposites: the unique half-edge b->a for a->b, when the edge is manifold.
-  t.opposite_.assign(nh, invalid_index);
+      for (Index v : faces_[f]) ++out_begin_[v + 1];
+  for (std::size_t v = 0; v < nv; ++v) out_begin_[v + 1] += out_begin_[v];
+  out_.resize(out_begin_[nv]);
+  std::vector<Index> out_target(out_.size());
+  std::vector<Index> fill(out_begin_.begin(), out_begin_.end() - 1);
+  for (Index f = 0; f < nf; ++f)
+    if (face_ok[f])
+      for (Index i = 0; i < 3; ++i) {
+        const Index slot = fill[faces_[f][i]]++;
+        out_[slot] = 3 * f + i;
+        out_target[slot] = faces_[f][i == 2 ? 0 : i + 1];
+      }
+  return out_target;
+}
+
+/// Opposites: the unique half-edge b->a for a->b, when the edge is manifold.
+/// Reports the non-manifold and misoriented edges, and returns the vertices
+/// on them: those cannot be walked around, and are not reported again as
+/// non-manifold vertices.
+inline std::vector<char> Mesh_topology::match_opposites(std::size_t nv, const std::vector<char>& face_ok,
+                                                        const std::vector<Index>& out_target,
+                                                        std::vector<Mesh_issue>& issues) {
+  const Index nh = static_cast<Index>(3 * faces_.size());
+  opposite_.assign(nh, invalid_index);
   std::vector<Edge> bad_edges, misoriented;
   for (Index h = 0; h < nh; ++h) {
     if (!face_ok[h / 3]) continue;
-    const Index a = t.source(h), b = t.target(h);
+    const Index a = source(h), b = target(h);
     Index same = 0, opp = 0, match = invalid_index;
-    for (Index k = t.out_begin_[a]; k < t.out_begin_[a + 1]; ++k) same += out_target[k] == b;
-    for (Index k = t.out_begin_[b]; k < t.out_begin_[b + 1]; ++k)
-      if (out_target[k] == a) ++opp, match = t.out_[k];
+    for (Index k = out_begin_[a]; k < out_begin_[a + 1]; ++k) same += out_target[k] == b;
+    for (Index k = out_begin_[b]; k < out_begin_[b + 1]; ++k)
+      if (out_target[k] == a) ++opp, match = out_[k];
     if (same + opp > 2) bad_edges.push_back(Edge::of(a, b));
     else if (same == 2) misoriented.push_back(Edge::of(a, b));
-    else if (opp == 1) t.opposite_[h] = match;
+    else if (opp == 1) opposite_[h] = match;
   }
   const auto report_edges = [&](std::vector<Edge>& v, Mesh_defect d) {
     std::sort(v.begin(), v.end());
@@ -292,57 +326,64 @@ inline Mesh_topology Mesh_topology::build_checked(std::size_t nv, std::span<cons
   };
   report_edges(bad_edges, Mesh_defect::non_manifold_edge);
   report_edges(misoriented, Mesh_defect::inconsistent_orientation);
-  // Vertices on such edges cannot be walked around; they are not reported
-  // again as non-manifold vertices.
   std::vector<char> on_bad_edge(nv, 0);
   for (const auto* v : {&bad_edges, &misoriented})
     for (const Edge& e : *v) on_bad_edge[e.a] = on_bad_edge[e.b] = 1;
-  // Edge numbering.
-  t.edge_of_.assign(nh, invalid_index);
-  t.edge_halfedge_.reserve(nh / 2 + 3);
+  return on_bad_edge;
+}
+
+/// Edge numbering: in the order of each edge's first half-edge.
+inline void Mesh_topology::number_edges(const std::vector<char>& face_ok) {
+  const Index nh = static_cast<Index>(3 * faces_.size());
+  edge_of_.assign(nh, invalid_index);
+  edge_halfedge_.reserve(nh / 2 + 3);
   for (Index h = 0; h < nh; ++h) {
-    if (!face_ok[h / 3] || t.edge_of_[h] != invalid_index) continue;
-    const Index e = static_cast<Index>(t.edge_halfedge_.size());
-    t.edge_halfedge_.push_back(h);
-    t.edge_of_[h] = e;
-    if (t.opposite_[h] != invalid_index) t.edge_of_[t.opposite_[h]] = e;
+    if (!face_ok[h / 3] || edge_of_[h] != invalid_index) continue;
+    const Index e = static_cast<Index>(edge_halfedge_.size());
+    edge_halfedge_.push_back(h);
+    edge_of_[h] = e;
+    if (opposite_[h] != invalid_index) edge_of_[opposite_[h]] = e;
   }
-  // Walk starts; a vertex whose walk misses faces has several fans.
-  t.vertex_halfedge_.assign(nv, invalid_index);
+}
+
+/// Walk starts; a vertex whose walk misses faces has several fans.
+inline void Mesh_topology::find_walk_starts(const std::vector<char>& on_bad_edge, std::vector<Mesh_issue>& issues) {
+  const Index nv = static_cast<Index>(on_bad_edge.size());
+  vertex_halfedge_.assign(nv, invalid_index);
   for (Index v = 0; v < nv; ++v) {
-    const Index begin = t.out_begin_[v], end = t.out_begin_[v + 1];
+    const Index begin = out_begin_[v], end = out_begin_[v + 1];
     if (begin == end) continue;
-    Index start = t.out_[begin], boundary_starts = 0;
+    Index start = out_[begin], boundary_starts = 0;
     for (Index k = begin; k < end; ++k)
-      if (t.opposite_[t.out_[k]] == invalid_index) start = t.out_[k], ++boundary_starts;
-    t.vertex_halfedge_[v] = start;
+      if (opposite_[out_[k]] == invalid_index) start = out_[k], ++boundary_starts;
+    vertex_halfedge_[v] = start;
     Index reached = 0;
-    t.for_each_outgoing(v, [&](Index) { ++reached; });
-    if (reached != end - begin && !on_bad_edge[v]) {
-      // Count the fans: a boundary-free fan is a cycle, a boundary fan starts
-      // at a boundary half-edge.
-      Index cycles = 0;
-      std::vector<char> seen(end - begin, 0);
-      const auto slot = [&](Index h) {
-        return static_cast<Index>(std::find(t.out_.begin() + begin, t.out_.begin() + end, h) -
-                                  (t.out_.begin() + begin));
-      };
-      for (Index k = begin; k < end; ++k) {
-        if (t.opposite_[t.out_[k]] == invalid_index) {
-          for (Index h = t.out_[k]; h != invalid_index && !seen[slot(h)]; h = t.ccw_outgoing(h))
-            seen[slot(h)] = 1;
-        }
-      }
-      for (Index k = begin; k < end; ++k)
-        if (!seen[k - begin]) {
-          ++cycles;
-          for (Index h = t.out_[k]; h != invalid_index && !seen[slot(h)]; h = t.ccw_outgoing(h))
-            seen[slot(h)] = 1;
-        }
-      issues.push_back({Mesh_defect::non_manifold_vertex, {v, boundary_starts + cycles}});
+    for_each_outgoing(v, [&](Index) { ++reached; });
+    if (reached != end - begin && !on_bad_edge[v])
+      issues.push_back({Mesh_defect::non_manifold_vertex, {v, boundary_starts + count_fans(v)}});
+  }
+}
+
+/// The fans around v without a boundary half-edge (cycles): a boundary fan
+/// starts at a boundary half-edge, and those are counted by the caller.
+inline Index Mesh_topology::count_fans(Index v) const {
+  const Index begin = out_begin_[v], end = out_begin_[v + 1];
+  Index cycles = 0;
+  std::vector<char> seen(end - begin, 0);
+  const auto slot = [&](Index h) {
+    return static_cast<Index>(std::find(out_.begin() + begin, out_.begin() + end, h) - (out_.begin() + begin));
+  };
+  for (Index k = begin; k < end; ++k) {
+    if (opposite_[out_[k]] == invalid_index) {
+      for (Index h = out_[k]; h != invalid_index && !seen[slot(h)]; h = ccw_outgoing(h)) seen[slot(h)] = 1;
     }
   }
-  return t;
+  for (Index k = begin; k < end; ++k)
+    if (!seen[k - begin]) {
+      ++cycles;
+      for (Index h = out_[k]; h != invalid_index && !seen[slot(h)]; h = ccw_outgoing(h)) seen[slot(h)] = 1;
+    }
+  return cycles;
 }
 
 }  // namespace relgeo

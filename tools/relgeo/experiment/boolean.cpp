@@ -72,25 +72,99 @@ bool bounds_a_solid(const Solid_report& v) {
          v.outward_oriented.status != Check_status::fail && v.volume.computed && v.volume.lower > 0;
 }
 
-}  // namespace
+/// One run judged: is its result a valid solid, before and after rounding,
+/// and how far is its volume from the oracle's.
+struct Run_verdict {
+  std::string status;
+  /// A certified Boolean whose only failure is a repair of the rounding that
+  /// did not converge: valid before rounding, listed as crossing in doubles.
+  bool rounding_failed = false;
+  bool solid = false, manifold = false;
+  std::size_t crossings = 0;
+  bool valid_exact = false;  ///< solid, and no crossing before rounding (where known)
+  bool valid = false;        ///< what the user receives: the doubles, crossings of the rounded mesh included
+  double relative_volume_error = 0;  ///< NaN: no oracle
+};
 
-Section_report boolean_section(const Experiment_context& ctx) {
-  Section_report rep;
-  const std::vector<std::string> kernels = {"double", "failsafe", "filtered", "exact", "cgal-epeck"};
-  Text_table t({"case", "op", "kernel", "status", "faces", "solid", "manifold", "crossings", "exact cr.", "volume",
-                "rel. error", "curves", "time s"});
-  t.set_left_columns(4);
-  Json rows = Json::array();
-  std::vector<Picture> pictures;
-  std::size_t certified_runs = 0, certified_exact = 0, certified_delivered = 0;
-  std::vector<std::string> rounded_crossings;
-  std::vector<std::string> repaired;  // results whose rounding was repaired, with what the repair did
-  for (const Boolean_case& c : boolean_cases(ctx.quick)) {
-    ctx.progress(c.name + ": CGAL's corefinement (Epeck)");
+Run_verdict judge(const Boolean_run& run, std::string status, const Oracle_comparison& oracle) {
+  Run_verdict r;
+  r.status = std::move(status);
+  const Solid_report& v = run.validation;
+  r.rounding_failed = run.certified && !run.ok && run.failure.rfind("rounding:", 0) == 0;
+  r.solid = (run.ok || r.rounding_failed) && bounds_a_solid(v);
+  r.manifold = v.edge_manifold.passed() && v.vertex_manifold.passed();
+  r.crossings = v.self_intersection_free.count;
+  // The Boolean's own crossings: those of the exact result, known under
+  // the exact kernel (the filtered kernel's result has the same faces: the
+  // exact kernel runs on it through its Double_point_kernel).
+  const bool crossing_free = !run.exact_self_intersecting_pairs || *run.exact_self_intersecting_pairs == 0;
+  r.valid_exact = r.solid && crossing_free;
+  r.valid = r.valid_exact && r.crossings == 0;
+  // No oracle when CGAL's corefinement refuses (it cannot output a
+  // non-manifold edge): NaN, shown as "no oracle".
+  const double volume = v.volume.value;
+  r.relative_volume_error = !oracle.cgal_ok         ? std::nan("")
+                            : oracle.cgal_volume != 0 ? std::abs(volume - oracle.cgal_volume) / std::abs(oracle.cgal_volume)
+                                                      : std::abs(volume);
+  return r;
+}
+
+Json run_json(const Boolean_case& c, const std::string& kernel, const Boolean_run& run, const Run_verdict& r,
+              const Oracle_comparison& oracle) {
+  const Solid_report& v = run.validation;
+  const double rel = r.relative_volume_error;
+  Json j;
+  j["case"] = c.name;
+  j["operation"] = std::string(to_string(c.op));
+  j["kernel"] = kernel;
+  j["kernel_model"] = run.kernel_model;
+  j["status"] = r.status;
+  j["certified"] = run.certified;
+  j["faces"] = run.output.faces.size();
+  j["valid"] = r.valid;
+  j["valid_before_rounding"] = r.valid_exact;
+  j["validation"] = run.ok || r.rounding_failed ? Json(run.validation.summary()) : Json(nullptr);
+  j["rounding"] = rounding_repair_json(run.rounding, run.rounding_method);
+  j["rounded_self_intersecting_pairs"] = r.crossings;
+  j["exact_self_intersecting_pairs"] =
+      run.exact_self_intersecting_pairs ? Json(*run.exact_self_intersecting_pairs) : Json(nullptr);
+  j["volume"] = v.volume.value;
+  j["oracle_volume"] = oracle.cgal_ok ? Json(oracle.cgal_volume) : Json(nullptr);
+  j["relative_volume_error"] = std::isnan(rel) ? Json(nullptr) : Json(rel);
+  j["euler_characteristic"] = v.euler_characteristic ? Json(*v.euler_characteristic) : Json(nullptr);
+  j["time_s"] = {{"check", run.time.check},           {"broad_phase", run.time.broad_phase},
+                 {"narrow_phase", run.time.narrow_phase}, {"retriangulation", run.time.retriangulation},
+                 {"labelling", run.time.labelling},   {"assembly", run.time.assembly},
+                 {"rounding", run.time.rounding}};
+  return j;
+}
+
+/// A note listing `items` under `title` (none when the list is empty).
+void add_list_note(Section_report& rep, const std::string& title, const std::vector<std::string>& items) {
+  if (items.empty()) return;
+  std::string listed = title + ":\n";
+  for (const std::string& r : items) listed += "  " + r + "\n";
+  rep.add_note(listed + "\n");
+}
+
+/// The section's runs: every case under every kernel, into one table, the
+/// run records, the pictures and the counts of certified results.
+class Boolean_experiment {
+ public:
+  explicit Boolean_experiment(const Experiment_context& ctx) : ctx_(ctx) { table_.set_left_columns(4); }
+
+  Section_report run() && {
+    for (const Boolean_case& c : boolean_cases(ctx_.quick)) run_case(c);
+    return std::move(*this).finish();
+  }
+
+ private:
+  void run_case(const Boolean_case& c) {
+    ctx_.progress(c.name + ": CGAL's corefinement (Epeck)");
     // The oracle's volume does not depend on the result passed: give it none.
     const Oracle_comparison oracle = compare_with_cgal(c.a, c.b, c.op, Mesh_double{});
-    for (const std::string& kernel : kernels) {
-      ctx.progress(c.name + ": " + kernel);
+    for (const std::string kernel : {"double", "failsafe", "filtered", "exact", "cgal-epeck"}) {
+      ctx_.progress(c.name + ": " + kernel);
       Boolean_run run;
       std::string status;
       try {
@@ -99,127 +173,108 @@ Section_report boolean_section(const Experiment_context& ctx) {
       } catch (const std::exception& e) {
         status = std::string("refused: ") + e.what();
       }
-      const Solid_report& v = run.validation;
-      const double volume = v.volume.value;
-      // A certified Boolean whose only failure is a repair of the rounding that
-      // did not converge: valid before rounding, listed as crossing in doubles.
-      const bool rounding_failed = run.certified && !run.ok && run.failure.rfind("rounding:", 0) == 0;
-      const bool solid = (run.ok || rounding_failed) && bounds_a_solid(v);
-      const bool manifold = v.edge_manifold.passed() && v.vertex_manifold.passed();
-      const std::size_t crossings = v.self_intersection_free.count;
-      // The Boolean's own crossings: those of the exact result, known under
-      // the exact kernel (the filtered kernel's result has the same faces: the
-      // exact kernel runs on it through its Double_point_kernel).
-      const bool crossing_free = !run.exact_self_intersecting_pairs || *run.exact_self_intersecting_pairs == 0;
-      const bool valid_exact = solid && crossing_free;
-      // What the user receives: the doubles, crossings of the rounded mesh included.
-      const bool valid = valid_exact && crossings == 0;
-      // No oracle when CGAL's corefinement refuses (it cannot output a
-      // non-manifold edge): NaN, shown as "no oracle".
-      const double rel = !oracle.cgal_ok         ? std::nan("")
-                         : oracle.cgal_volume != 0 ? std::abs(volume - oracle.cgal_volume) / std::abs(oracle.cgal_volume)
-                                                   : std::abs(volume);
-      if (run.certified && run.rounding.rounds > 0 && (run.ok || rounding_failed))
-        repaired.push_back(c.name + " under " + kernel + ": " + std::to_string(run.rounding.defects_before) +
-                           " defects after nearest rounding; " + std::to_string(run.rounding.moved_vertices) +
-                           " vertices moved, " + std::to_string(run.rounding.flips) + " flips, " +
-                           std::to_string(run.rounding.collapses) + " collapses, largest change " +
-                           g3(run.rounding.largest_change) + (rounding_failed ? " (did not converge)" : ""));
-      if (run.certified && (run.ok || rounding_failed)) {
-        ++certified_runs;
-        const bool on_volume = std::isnan(rel) || rel <= 1e-12;
-        if (valid_exact && on_volume) {
-          ++certified_exact;
-          if (valid) ++certified_delivered;
-          else rounded_crossings.push_back(c.name + " under " + kernel + ": " + std::to_string(crossings) +
-                                           " crossing face pairs after rounding");
-        } else {
-          rep.failures.push_back(c.name + " under " + kernel + ": certified result " +
-                                 (valid_exact ? "off the oracle's volume by " + g3(rel) : std::string("not valid")));
-        }
-      }
-      const auto yes_no = [&](bool x) { return run.ok ? std::string(x ? "yes" : "NO") : std::string("-"); };
-      t.add_row({c.name, std::string(to_string(c.op)), kernel, status.substr(0, 40),
-                 std::to_string(run.output.faces.size()), yes_no(solid), yes_no(manifold),
-                 run.ok ? std::to_string(crossings) : "-",
-                 run.exact_self_intersecting_pairs ? std::to_string(*run.exact_self_intersecting_pairs) : "-",
-                 run.ok ? g3(volume) : "-", !run.ok ? "-" : std::isnan(rel) ? "no oracle" : g3(rel),
-                 std::to_string(run.output.tags.creases().size()),
-                 format_fixed(run.time.total(), 4)});
-      Json j;
-      j["case"] = c.name;
-      j["operation"] = std::string(to_string(c.op));
-      j["kernel"] = kernel;
-      j["kernel_model"] = run.kernel_model;
-      j["status"] = status;
-      j["certified"] = run.certified;
-      j["faces"] = run.output.faces.size();
-      j["valid"] = valid;
-      j["valid_before_rounding"] = valid_exact;
-      j["validation"] = run.ok || rounding_failed ? Json(run.validation.summary()) : Json(nullptr);
-      j["rounding"] = rounding_repair_json(run.rounding, run.rounding_method);
-      j["rounded_self_intersecting_pairs"] = crossings;
-      j["exact_self_intersecting_pairs"] =
-          run.exact_self_intersecting_pairs ? Json(*run.exact_self_intersecting_pairs) : Json(nullptr);
-      j["volume"] = volume;
-      j["oracle_volume"] = oracle.cgal_ok ? Json(oracle.cgal_volume) : Json(nullptr);
-      j["relative_volume_error"] = std::isnan(rel) ? Json(nullptr) : Json(rel);
-      j["euler_characteristic"] = v.euler_characteristic ? Json(*v.euler_characteristic) : Json(nullptr);
-      j["time_s"] = {{"check", run.time.check},           {"broad_phase", run.time.broad_phase},
-                     {"narrow_phase", run.time.narrow_phase}, {"retriangulation", run.time.retriangulation},
-                     {"labelling", run.time.labelling},   {"assembly", run.time.assembly},
-                     {"rounding", run.time.rounding}};
-      rows.push_back(j);
-      if (c.picture && kernel == "filtered" && run.ok) {
-        Render_options ro;
-        ro.highlight_creases = true;
-        for (const Face_origin& f : run.provenance) ro.face_groups.push_back(f.operand);
-        std::string file = c.name;
-        std::replace(file.begin(), file.end(), ' ', '_');
-        const auto path = ctx.section_dir() / (file + ".png");
-        io::write_png(path.string(), render_mesh(run.output, ro));
-        pictures.push_back({ctx.relative(path), c.name + " (filtered): faces by operand, intersection curves red"});
-      }
+      const Run_verdict r = judge(run, std::move(status), oracle);
+      tally(c, kernel, run, r);
+      add_row(c, kernel, run, r);
+      rows_.push_back(run_json(c, kernel, run, r, oracle));
+      if (c.picture && kernel == "filtered" && run.ok) add_picture(c, run);
     }
-    t.add_rule();
+    table_.add_rule();
   }
-  rep.json["runs"] = rows;
-  rep.json["notes"] =
-      "solid = closed, consistently oriented, no degenerate face, positive volume, outward orientation not failed "
-      "(validate_solid, exact tests on the output's doubles); manifold = edge- and vertex-manifold; crossings = self-intersecting face pairs of the "
-      "rounded output; exact cr. = the same before rounding (exact kernel); valid = solid and no crossing, in "
-      "the rounded output and before rounding where known (exact kernel); valid_before_rounding = the same without "
-      "the rounded output's crossings; rel. error = |volume - CGAL Epeck corefinement volume| / |CGAL volume|; curves = crease edges";
-  rep.add_note(
-      "Mesh Booleans (thesis Ch. 5) under every kernel, against CGAL's corefinement on Epeck (the oracle).\n"
-      "solid = closed, consistently oriented, no degenerate face, positive volume (exact tests on the output's doubles);\n"
-      "manifold: two solids sharing only an edge give a non-manifold edge, as they must; crossings = face pairs of\n"
-      "the rounded output that cross (rounding exact points to doubles can do that, CGAL issue 9154), exact cr. =\n"
-      "the same before rounding (exact kernel). rel. error = |volume - oracle volume| / |oracle volume| (no oracle:\n"
-      "CGAL's corefinement refuses to output a non-manifold edge).\n"
-      "Certified kernels (failsafe, filtered, exact) must return a solid without crossings before rounding and with\n"
-      "the oracle's volume, or fail and say why; double may return anything (what a naive implementation gives).\n"
-      "Pictures: DIR/boolean/*.png.\n\n");
-  rep.add_table(t);
-  rep.add_gallery("Unions: faces coloured by operand, intersection curves in red (kernel filtered)",
-                  std::move(pictures));
-  rep.json["rounded_crossings"] = rounded_crossings;
-  rep.json["rounding_repaired"] = repaired;
-  if (!repaired.empty()) {
-    std::string listed = "Certified results whose rounding to doubles was repaired (Boolean_options::rounding):\n";
-    for (const std::string& r : repaired) listed += "  " + r + "\n";
-    rep.add_note(listed + "\n");
+
+  /// The repaired roundings, and the certified results: valid as delivered,
+  /// valid only before rounding, or a failure of the section.
+  void tally(const Boolean_case& c, const std::string& kernel, const Boolean_run& run, const Run_verdict& r) {
+    const bool delivered = run.ok || r.rounding_failed;
+    if (run.certified && run.rounding.rounds > 0 && delivered)
+      repaired_.push_back(c.name + " under " + kernel + ": " + std::to_string(run.rounding.defects_before) +
+                          " defects after nearest rounding; " + std::to_string(run.rounding.moved_vertices) +
+                          " vertices moved, " + std::to_string(run.rounding.flips) + " flips, " +
+                          std::to_string(run.rounding.collapses) + " collapses, largest change " +
+                          g3(run.rounding.largest_change) + (r.rounding_failed ? " (did not converge)" : ""));
+    if (!run.certified || !delivered) return;
+    ++certified_runs_;
+    const double rel = r.relative_volume_error;
+    const bool on_volume = std::isnan(rel) || rel <= 1e-12;
+    if (r.valid_exact && on_volume) {
+      ++certified_exact_;
+      if (r.valid) ++certified_delivered_;
+      else rounded_crossings_.push_back(c.name + " under " + kernel + ": " + std::to_string(r.crossings) +
+                                        " crossing face pairs after rounding");
+    } else {
+      rep_.failures.push_back(c.name + " under " + kernel + ": certified result " +
+                              (r.valid_exact ? "off the oracle's volume by " + g3(rel) : std::string("not valid")));
+    }
   }
-  if (!rounded_crossings.empty()) {
-    std::string listed = "Certified results valid before rounding that cross themselves in doubles:\n";
-    for (const std::string& r : rounded_crossings) listed += "  " + r + "\n";
-    rep.add_note(listed + "\n");
+
+  void add_row(const Boolean_case& c, const std::string& kernel, const Boolean_run& run, const Run_verdict& r) {
+    const double rel = r.relative_volume_error;
+    const auto yes_no = [&](bool x) { return run.ok ? std::string(x ? "yes" : "NO") : std::string("-"); };
+    table_.add_row({c.name, std::string(to_string(c.op)), kernel, r.status.substr(0, 40),
+                    std::to_string(run.output.faces.size()), yes_no(r.solid), yes_no(r.manifold),
+                    run.ok ? std::to_string(r.crossings) : "-",
+                    run.exact_self_intersecting_pairs ? std::to_string(*run.exact_self_intersecting_pairs) : "-",
+                    run.ok ? g3(run.validation.volume.value) : "-", !run.ok ? "-" : std::isnan(rel) ? "no oracle" : g3(rel),
+                    std::to_string(run.output.tags.creases().size()),
+                    format_fixed(run.time.total(), 4)});
   }
-  rep.add_headline("Certified Boolean results valid as delivered (in doubles) and on the oracle's volume",
-                   std::to_string(certified_delivered) + " of " + std::to_string(certified_runs));
-  rep.add_headline("Certified Boolean results valid before rounding and on the oracle's volume",
-                   std::to_string(certified_exact) + " of " + std::to_string(certified_runs));
-  return rep;
-}
+
+  void add_picture(const Boolean_case& c, const Boolean_run& run) {
+    Render_options ro;
+    ro.highlight_creases = true;
+    for (const Face_origin& f : run.provenance) ro.face_groups.push_back(f.operand);
+    std::string file = c.name;
+    std::replace(file.begin(), file.end(), ' ', '_');
+    const auto path = ctx_.section_dir() / (file + ".png");
+    io::write_png(path.string(), render_mesh(run.output, ro));
+    pictures_.push_back({ctx_.relative(path), c.name + " (filtered): faces by operand, intersection curves red"});
+  }
+
+  Section_report finish() && {
+    rep_.json["runs"] = rows_;
+    rep_.json["notes"] =
+        "solid = closed, consistently oriented, no degenerate face, positive volume, outward orientation not failed "
+        "(validate_solid, exact tests on the output's doubles); manifold = edge- and vertex-manifold; crossings = self-intersecting face pairs of the "
+        "rounded output; exact cr. = the same before rounding (exact kernel); valid = solid and no crossing, in "
+        "the rounded output and before rounding where known (exact kernel); valid_before_rounding = the same without "
+        "the rounded output's crossings; rel. error = |volume - CGAL Epeck corefinement volume| / |CGAL volume|; curves = crease edges";
+    rep_.add_note(
+        "Mesh Booleans (thesis Ch. 5) under every kernel, against CGAL's corefinement on Epeck (the oracle).\n"
+        "solid = closed, consistently oriented, no degenerate face, positive volume (exact tests on the output's doubles);\n"
+        "manifold: two solids sharing only an edge give a non-manifold edge, as they must; crossings = face pairs of\n"
+        "the rounded output that cross (rounding exact points to doubles can do that, CGAL issue 9154), exact cr. =\n"
+        "the same before rounding (exact kernel). rel. error = |volume - oracle volume| / |oracle volume| (no oracle:\n"
+        "CGAL's corefinement refuses to output a non-manifold edge).\n"
+        "Certified kernels (failsafe, filtered, exact) must return a solid without crossings before rounding and with\n"
+        "the oracle's volume, or fail and say why; double may return anything (what a naive implementation gives).\n"
+        "Pictures: DIR/boolean/*.png.\n\n");
+    rep_.add_table(table_);
+    rep_.add_gallery("Unions: faces coloured by operand, intersection curves in red (kernel filtered)",
+                     std::move(pictures_));
+    rep_.json["rounded_crossings"] = rounded_crossings_;
+    rep_.json["rounding_repaired"] = repaired_;
+    add_list_note(rep_, "Certified results whose rounding to doubles was repaired (Boolean_options::rounding)", repaired_);
+    add_list_note(rep_, "Certified results valid before rounding that cross themselves in doubles", rounded_crossings_);
+    rep_.add_headline("Certified Boolean results valid as delivered (in doubles) and on the oracle's volume",
+                      std::to_string(certified_delivered_) + " of " + std::to_string(certified_runs_));
+    rep_.add_headline("Certified Boolean results valid before rounding and on the oracle's volume",
+                      std::to_string(certified_exact_) + " of " + std::to_string(certified_runs_));
+    return std::move(rep_);
+  }
+
+  const Experiment_context& ctx_;
+  Section_report rep_;
+  Text_table table_{{"case", "op", "kernel", "status", "faces", "solid", "manifold", "crossings", "exact cr.", "volume",
+                     "rel. error", "curves", "time s"}};
+  Json rows_ = Json::array();
+  std::vector<Picture> pictures_;
+  std::size_t certified_runs_ = 0, certified_exact_ = 0, certified_delivered_ = 0;
+  std::vector<std::string> rounded_crossings_;
+  std::vector<std::string> repaired_;  ///< results whose rounding was repaired, with what the repair did
+};
+
+}  // namespace
+
+Section_report boolean_section(const Experiment_context& ctx) { return Boolean_experiment(ctx).run(); }
 
 }  // namespace relgeo::tool

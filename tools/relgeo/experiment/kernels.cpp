@@ -105,18 +105,14 @@ void run_grids(const Experiment_context& ctx, const std::vector<Kernel_entry>& k
 
 // ---- (2) the workloads --------------------------------------------------------
 
-template <class Case, class Measure>
-void run_workloads(const Experiment_context& ctx, const std::vector<Kernel_entry>& kernels,
-                   const std::string& predicate, const std::vector<analysis::Workload<Case>>& workloads,
-                   Measure measure, Json& records, Section_report& rep, Headline_figures& figures) {
-  std::vector<std::vector<Certified_sign>> exact;
-  for (const auto& w : workloads) {
-    ctx.progress(predicate + ": exact signs of workload " + w.name);
-    exact.push_back(analysis::exact_signs<Case>(w.cases));
-  }
-  const std::size_t n = ctx.workload_size, n_slow = std::min(n, ctx.slow_kernel_cases);
+/// The workloads' two tables: soundness (wrong / uncertain per workload and
+/// over all) and time per predicate.
+struct Workload_tables {
+  Text_table soundness, time;
+};
 
-  // Two tables: soundness (wrong / uncertain per workload) and time per predicate.
+template <class Case>
+Workload_tables workload_tables(const std::vector<analysis::Workload<Case>>& workloads) {
   std::vector<std::string> header = {"kernel", "certified", "cases"};
   std::vector<std::pair<std::string, std::size_t>> groups = {{"", 3}};
   std::vector<std::string> time_header = {"kernel"};
@@ -128,9 +124,50 @@ void run_workloads(const Experiment_context& ctx, const std::vector<Kernel_entry
   header.insert(header.end(), {"wrong", "uncertain"});
   groups.push_back({"all workloads", 2});
   time_header.push_back("mean");
-  Text_table tab(header), time_tab(time_header);
-  tab.set_groups(groups);
+  Workload_tables t{Text_table(header), Text_table(time_header)};
+  t.soundness.set_groups(groups);
+  return t;
+}
 
+/// One kernel on one workload's first `cases`: its record, and a soundness
+/// violation when a certified kernel answers wrong.
+template <class Case, class Measure>
+Workload_measurement measure_workload(const Experiment_context& ctx, const Kernel_entry& k, const std::string& predicate,
+                                      const analysis::Workload<Case>& workload, std::span<const Certified_sign> exact,
+                                      std::size_t cases, bool subset, Measure measure, Json& records,
+                                      Section_report& rep) {
+  const std::size_t m = std::min(cases, workload.cases.size());
+  const Workload_measurement r =
+      measure(k.name, std::span<const Case>(workload.cases).first(m), exact.first(m), ctx.min_timing_seconds);
+  Json j;
+  j["predicate"] = predicate;
+  j["kernel"] = k.label();
+  j["certified"] = k.certified;
+  j["workload"] = workload.name;
+  j["subset"] = subset;  // true: only the first `cases` cases of the workload
+  add_tally_json(j, r.tally, "cases");
+  j["uncertain_rate"] = r.tally.uncertain_rate();
+  j["ns_per_predicate"] = r.ns_per_predicate;
+  j["timed_evaluations"] = r.timed_evaluations;
+  records.push_back(std::move(j));
+  if (k.certified && r.tally.wrong() > 0)
+    rep.failures.push_back("soundness violation: certified kernel " + k.label() + " gave " +
+                           std::to_string(r.tally.wrong()) + " wrong answers on " + predicate + " workload " +
+                           workload.name);
+  return r;
+}
+
+template <class Case, class Measure>
+void run_workloads(const Experiment_context& ctx, const std::vector<Kernel_entry>& kernels,
+                   const std::string& predicate, const std::vector<analysis::Workload<Case>>& workloads,
+                   Measure measure, Json& records, Section_report& rep, Headline_figures& figures) {
+  std::vector<std::vector<Certified_sign>> exact;
+  for (const auto& w : workloads) {
+    ctx.progress(predicate + ": exact signs of workload " + w.name);
+    exact.push_back(analysis::exact_signs<Case>(w.cases));
+  }
+  const std::size_t n = ctx.workload_size, n_slow = std::min(n, ctx.slow_kernel_cases);
+  Workload_tables tables = workload_tables(workloads);
   for (const auto& k : kernels) {
     ctx.progress(predicate + ": " + k.label());
     const std::size_t used = k.slow ? n_slow : n;
@@ -141,37 +178,20 @@ void run_workloads(const Experiment_context& ctx, const std::vector<Kernel_entry
     analysis::Sign_tally all;
     double ns_sum = 0;
     for (std::size_t i = 0; i < workloads.size(); ++i) {
-      const std::size_t m = std::min(used, workloads[i].cases.size());
-      const auto cases = std::span<const Case>(workloads[i].cases).first(m);
-      const auto signs = std::span<const Certified_sign>(exact[i]).first(m);
-      const Workload_measurement r = measure(k.name, cases, signs, ctx.min_timing_seconds);
+      const Workload_measurement r =
+          measure_workload(ctx, k, predicate, workloads[i], exact[i], used, subset, measure, records, rep);
       all += r.tally;
       ns_sum += r.ns_per_predicate;
       row.insert(row.end(), {wrong_text(r.tally.wrong(), k.certified), rate_text(r.tally.uncertain_rate())});
       time_row.push_back(format_fixed(r.ns_per_predicate, 1));
-      Json j;
-      j["predicate"] = predicate;
-      j["kernel"] = k.label();
-      j["certified"] = k.certified;
-      j["workload"] = workloads[i].name;
-      j["subset"] = subset;  // true: only the first `cases` cases of the workload
-      add_tally_json(j, r.tally, "cases");
-      j["uncertain_rate"] = r.tally.uncertain_rate();
-      j["ns_per_predicate"] = r.ns_per_predicate;
-      j["timed_evaluations"] = r.timed_evaluations;
-      records.push_back(std::move(j));
-      if (k.certified && r.tally.wrong() > 0)
-        rep.failures.push_back("soundness violation: certified kernel " + k.label() + " gave " +
-                               std::to_string(r.tally.wrong()) + " wrong answers on " + predicate + " workload " +
-                               workloads[i].name);
     }
     const double mean_ns = workloads.empty() ? 0.0 : ns_sum / double(workloads.size());
     if (k.certified) figures.certified_wrong += all.wrong(), figures.certified_answers += all.cases;
     if (predicate == "orientation_2") figures.ns_orientation_2[k.label()] = mean_ns;
     row.insert(row.end(), {wrong_text(all.wrong(), k.certified), rate_text(all.uncertain_rate())});
     time_row.push_back(format_fixed(mean_ns, 1));
-    tab.add_row(std::move(row));
-    time_tab.add_row(std::move(time_row));
+    tables.soundness.add_row(std::move(row));
+    tables.time.add_row(std::move(time_row));
   }
   const std::string subset_note =
       n_slow < n ? "* slow kernel: only the first " + std::to_string(n_slow) + " cases of each workload\n" : std::string();
@@ -179,11 +199,11 @@ void run_workloads(const Experiment_context& ctx, const std::vector<Kernel_entry
                " cases: wrong = definite answers that differ from the exact sign, uncertain = "
                "rate of 'uncertain' answers\n" + subset_note +
                "! = soundness violation (a certified kernel answered wrong)\n\n");
-  rep.add_table(tab);
+  rep.add_table(tables.soundness);
   rep.add_note(predicate +
                ", time per predicate in ns (points built beforehand; fastest pass of a loop "
                "repeated for >= " + format_g(ctx.min_timing_seconds * 1000, 3) + " ms)\n" + subset_note + "\n");
-  rep.add_table(time_tab);
+  rep.add_table(tables.time);
 }
 
 void add_headlines(const Headline_figures& f, Section_report& rep) {

@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "cli/text.h"
@@ -87,6 +88,13 @@ struct Section_report {
     if (!pictures.empty()) blocks.push_back({{}, std::nullopt, title, std::move(pictures)});
   }
   void add_headline(const std::string& label, const std::string& value) { headlines.push_back({label, value}); }
+  /// The usual close of a part of a section: its note, its table, and its
+  /// numbers as json[key].
+  void add_part(const std::string& note, const Text_table& table, const std::string& key, io::Json numbers) {
+    add_note(note);
+    add_table(table);
+    json[key] = std::move(numbers);
+  }
 };
 
 using Section_function = Section_report (*)(const Experiment_context&);

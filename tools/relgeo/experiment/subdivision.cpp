@@ -87,132 +87,161 @@ io::Image bounds_picture(const Subdivision_result& r, Section_report& rep, const
   return render_mesh(r.limit, ro, &r.refined);
 }
 
+/// The slow kernels where they stay feasible (section budget one minute):
+/// MPFR up to level 2; GMP rationals up to level 2 on the creased box
+/// (valences 4 and 6: small denominators) and at level 0 on the icosahedron
+/// (valence 5: the 256-bit rational cos(2 pi / 5) makes coordinates
+/// thousands of bits long). Both with reduced bound depths.
+bool feasible(const Experiment_context& ctx, const std::string& mesh, const std::string& kernel, unsigned level) {
+  if (kernel == "mpfr-53") return level <= (ctx.quick ? 1u : 2u);
+  if (kernel == "exact") return mesh == "icosahedron" ? !ctx.quick && level == 0 : level <= (ctx.quick ? 1u : 2u);
+  return true;
+}
+
+Json run_json(const std::string& name, unsigned level, const std::string& kernel, const Subdivision_result& r,
+              const Json& bounds) {
+  Json j;
+  j["mesh"] = name;
+  j["level"] = level;
+  j["kernel"] = kernel;
+  j["kernel_model"] = r.kernel_model;
+  j["faces"] = r.refined.faces.size();
+  j["samples"] = r.samples;
+  j["refined_distance"] = r.refined_distance;
+  j["limit_distance"] = r.limit_distance;
+  j["limit_normal_offset"] = r.limit_normal_offset;
+  j["rounding"] = r.rounding;
+  j["mesh_size"] = r.mesh_size;
+  j["bounds"] = bounds;
+  j["time_s"] = {{"subdivision", r.time_subdivision}, {"bounds", r.time_bounds}};
+  return j;
+}
+
+/// The section's runs: every mesh, level and feasible kernel, into one table,
+/// the run records, the pictures and the headline figures.
+class Subdivision_experiment {
+ public:
+  explicit Subdivision_experiment(const Experiment_context& ctx) : ctx_(ctx), max_level_(ctx.quick ? 2 : 4) {
+    table_.set_left_columns(3);
+    table_.set_groups({{"", 4}, {"max distance to the exact limit surface", 3}, {"", 1},
+                       {"bound tightness (mean)", 4}, {"", 2}});
+  }
+
+  Section_report run() && {
+    const std::vector<std::pair<std::string, Mesh_double>> meshes = {{"icosahedron", icosahedron()},
+                                                                     {"creased-box", creased_box()}};
+    for (const auto& [name, mesh] : meshes)
+      for (unsigned level = 0; level <= max_level_; ++level) run_level(name, mesh, level);
+    return std::move(*this).finish();
+  }
+
+ private:
+  void run_level(const std::string& name, const Mesh_double& mesh, unsigned level) {
+    const int samples = level <= 2 ? 8 : 4;
+    ctx_.progress(name + " level " + std::to_string(level) + ": exact reference samples");
+    std::vector<Point_3<double>> reference, exact_limit;
+    exact_reference(mesh, level, {}, samples, reference, exact_limit);
+    for (const std::string kernel : {"double", "failsafe", "filtered", "mpfr-53", "float", "exact"}) {
+      if (!feasible(ctx_, name, kernel, level)) continue;
+      Subdivision_request rq;
+      rq.kernel = kernel;
+      rq.levels = level;
+      rq.bounds = true;
+      rq.samples = samples;
+      rq.reference = &reference;
+      rq.exact_limit_vertices = &exact_limit;
+      rq.small_bounds = kernel == "exact" || kernel == "mpfr-53";
+      const Subdivision_result r = run_subdivision(mesh, rq);
+      record_run(name, level, kernel, r);
+      if (name == "icosahedron" && level == 2 && kernel == "double") icosahedron_l2_limit_ = r.limit_distance;
+      if (kernel == "double") add_pictures(name, level, r);
+    }
+    table_.add_rule();
+  }
+
+  /// The run's row and record; samples outside a bound fail the section
+  /// (but for float: bounds computed in single precision miss samples by its
+  /// rounding, expected of a naive kernel).
+  void record_run(const std::string& name, unsigned level, const std::string& kernel, const Subdivision_result& r) {
+    long outside = 0;
+    Json jb = Json::object();
+    std::string tight[4];
+    for (std::size_t k = 0; k < r.bounds.size(); ++k) {
+      const auto& b = r.bounds[k];
+      if (b.is_bound) outside += b.samples_outside;
+      if (b.is_bound && kernel != "float") outside_total_ += b.samples_outside;
+      tight[k] = b.tightness_faces ? format_fixed(b.mean_tightness, 2) : "-";
+      jb[b.method] = bound_json(b);
+      if (b.is_bound && b.samples_outside > 0 && kernel != "float")
+        rep_.failures.push_back(name + " L" + std::to_string(level) + " " + kernel + ": " +
+                                std::to_string(b.samples_outside) + " samples outside the " + b.method + " bound");
+    }
+    table_.add_row({name, std::to_string(level), kernel, std::to_string(r.refined.faces.size()), g3(r.refined_distance),
+                    g3(r.limit_distance), g3(r.limit_normal_offset), g3(r.rounding), tight[0], tight[1], tight[2],
+                    tight[3], std::to_string(outside), format_fixed(r.time_subdivision + r.time_bounds, 3)});
+    rows_.push_back(run_json(name, level, kernel, r, jb));
+  }
+
+  /// Pictures from the double runs.
+  void add_pictures(const std::string& name, unsigned level, const Subdivision_result& r) {
+    const auto dir = ctx_.section_dir();
+    const auto picture = [&](const std::string& file, const io::Image& image, const std::string& caption) {
+      io::write_png((dir / file).string(), image);
+      pictures_.push_back({ctx_.relative(dir / file), name + ": " + caption});
+    };
+    if (level == 0) {
+      Render_options ro;
+      ro.wire = true;
+      picture(name + "_control.png", render_mesh(r.refined, ro), "control mesh");
+    }
+    if (level == 2)
+      picture(name + "_bounds_L2.png", bounds_picture(r, rep_, name),
+              "level-2 limit mesh, width of the tangent-plane bound (log scale, blue small .. red large)");
+    if (level == std::min(3u, max_level_))
+      picture(name + "_limit_L" + std::to_string(level) + ".png", render_mesh(r.limit, Render_options{}, &r.refined),
+              "limit mesh, level " + std::to_string(level));
+  }
+
+  Section_report finish() && {
+    rep_.json["runs"] = rows_;
+    rep_.json["notes"] =
+        "distances in mesh units; d(control) is the level-k control mesh (level 0: the input); tightness = "
+        "max(|lower|, |upper|) / sampled max offset per face, mean over faces with a nonzero offset; thesis = the "
+        "construction as printed (not a bound); outside = samples outside the three bounds (must be 0)";
+    rep_.add_note(
+        "Loop limit meshes against the exact limit surface (thesis Sec. 5.2, 5.4.1): distances sampled by exact\n"
+        "(GMP) evaluation at the dyadic points of every face (45 per face up to level 2, 15 beyond); rounding =\n"
+        "max |limit vertex - exact limit vertex|; tightness = bound / sampled max normal offset (mean over faces;\n"
+        "thesis = the construction as printed, not a bound); outside = samples outside a bound beyond 1e-13 x mesh\n"
+        "size (must be 0; float's single-precision bounds miss by its own rounding, ~1e-7). exact and mpfr-53 use\n"
+        "reduced bound depths (irregular 2, regular 1, universal 3: hence looser) and run where feasible in the\n"
+        "section's minute (mpfr-53 to level 2; exact to level 2 on the creased box, level 0 on the icosahedron,\n"
+        "whose valence-5 weights are 256-bit rationals).\n"
+        "Pictures: DIR/subdivision/<mesh>_control.png, <mesh>_limit_L3.png, <mesh>_bounds_L2.png (tangent-plane\n"
+        "bound width per face, log colour scale blue..red).\n\n");
+    rep_.add_table(table_);
+    rep_.add_gallery("Control meshes, limit meshes and bound widths (kernel double)", std::move(pictures_));
+    rep_.add_headline("Samples of the exact limit surface outside a certified bound (all kernels but float)",
+                      std::to_string(outside_total_));
+    if (icosahedron_l2_limit_ >= 0)
+      rep_.add_headline("Icosahedron, level-2 limit mesh (double): largest distance to the exact limit surface",
+                        g3(icosahedron_l2_limit_));
+    return std::move(rep_);
+  }
+
+  const Experiment_context& ctx_;
+  const unsigned max_level_;
+  Section_report rep_;
+  Json rows_ = Json::array();
+  std::vector<Picture> pictures_;
+  long outside_total_ = 0;
+  double icosahedron_l2_limit_ = -1;
+  Text_table table_{{"mesh", "L", "kernel", "faces", "d(control)", "d(limit)", "normal off.", "rounding", "basis",
+                     "tangent", "direct", "thesis", "outside", "time s"}};
+};
+
 }  // namespace
 
-Section_report subdivision_section(const Experiment_context& ctx) {
-  Section_report rep;
-  const std::vector<std::pair<std::string, Mesh_double>> meshes = {{"icosahedron", icosahedron()},
-                                                                   {"creased-box", creased_box()}};
-  const std::vector<std::string> kernels = {"double", "failsafe", "filtered", "mpfr-53", "float", "exact"};
-  const unsigned max_level = ctx.quick ? 2 : 4;
-  // The slow kernels where they stay feasible (section budget one minute):
-  // MPFR up to level 2; GMP rationals up to level 2 on the creased box
-  // (valences 4 and 6: small denominators) and at level 0 on the icosahedron
-  // (valence 5: the 256-bit rational cos(2 pi / 5) makes coordinates
-  // thousands of bits long). Both with reduced bound depths.
-  const auto feasible = [&](const std::string& mesh, const std::string& kernel, unsigned level) {
-    if (kernel == "mpfr-53") return level <= (ctx.quick ? 1u : 2u);
-    if (kernel == "exact") return mesh == "icosahedron" ? !ctx.quick && level == 0 : level <= (ctx.quick ? 1u : 2u);
-    return true;
-  };
-  Json rows = Json::array();
-  std::vector<Picture> pictures;
-  long outside_total = 0;
-  double icosahedron_l2_limit = -1;
-  Text_table t({"mesh", "L", "kernel", "faces", "d(control)", "d(limit)", "normal off.", "rounding", "basis",
-                "tangent", "direct", "thesis", "outside", "time s"});
-  t.set_left_columns(3);
-  t.set_groups({{"", 4}, {"max distance to the exact limit surface", 3}, {"", 1},
-                {"bound tightness (mean)", 4}, {"", 2}});
-  for (const auto& [name, mesh] : meshes) {
-    for (unsigned level = 0; level <= max_level; ++level) {
-      const int samples = level <= 2 ? 8 : 4;
-      ctx.progress(name + " level " + std::to_string(level) + ": exact reference samples");
-      std::vector<Point_3<double>> reference, exact_limit;
-      exact_reference(mesh, level, {}, samples, reference, exact_limit);
-      for (const auto& kernel : kernels) {
-        if (!feasible(name, kernel, level)) continue;
-        Subdivision_request rq;
-        rq.kernel = kernel;
-        rq.levels = level;
-        rq.bounds = true;
-        rq.samples = samples;
-        rq.reference = &reference;
-        rq.exact_limit_vertices = &exact_limit;
-        rq.small_bounds = kernel == "exact" || kernel == "mpfr-53";
-        const Subdivision_result r = run_subdivision(mesh, rq);
-        const double time = r.time_subdivision + r.time_bounds;
-        long outside = 0;
-        Json jb = Json::object();
-        std::string tight[4];
-        for (std::size_t k = 0; k < r.bounds.size(); ++k) {
-          const auto& b = r.bounds[k];
-          if (b.is_bound) outside += b.samples_outside;
-          if (b.is_bound && kernel != "float") outside_total += b.samples_outside;
-          tight[k] = b.tightness_faces ? format_fixed(b.mean_tightness, 2) : "-";
-          jb[b.method] = bound_json(b);
-          // float: bounds computed in single precision miss samples by its
-          // rounding (reported, expected of a naive kernel, not a failure)
-          if (b.is_bound && b.samples_outside > 0 && kernel != "float")
-            rep.failures.push_back(name + " L" + std::to_string(level) + " " + kernel + ": " +
-                                   std::to_string(b.samples_outside) + " samples outside the " + b.method + " bound");
-        }
-        t.add_row({name, std::to_string(level), kernel, std::to_string(r.refined.faces.size()), g3(r.refined_distance),
-                   g3(r.limit_distance), g3(r.limit_normal_offset), g3(r.rounding), tight[0], tight[1], tight[2],
-                   tight[3], std::to_string(outside), format_fixed(time, 3)});
-        Json j;
-        j["mesh"] = name;
-        j["level"] = level;
-        j["kernel"] = kernel;
-        j["kernel_model"] = r.kernel_model;
-        j["faces"] = r.refined.faces.size();
-        j["samples"] = r.samples;
-        j["refined_distance"] = r.refined_distance;
-        j["limit_distance"] = r.limit_distance;
-        j["limit_normal_offset"] = r.limit_normal_offset;
-        j["rounding"] = r.rounding;
-        j["mesh_size"] = r.mesh_size;
-        j["bounds"] = jb;
-        j["time_s"] = {{"subdivision", r.time_subdivision}, {"bounds", r.time_bounds}};
-        rows.push_back(j);
-        if (name == "icosahedron" && level == 2 && kernel == "double") icosahedron_l2_limit = r.limit_distance;
-        // Pictures from the double runs.
-        if (kernel == "double") {
-          const auto dir = ctx.section_dir();
-          const auto picture = [&](const std::string& file, const io::Image& image, const std::string& caption) {
-            io::write_png((dir / file).string(), image);
-            pictures.push_back({ctx.relative(dir / file), name + ": " + caption});
-          };
-          if (level == 0) {
-            Render_options ro;
-            ro.wire = true;
-            picture(name + "_control.png", render_mesh(r.refined, ro), "control mesh");
-          }
-          if (level == 2)
-            picture(name + "_bounds_L2.png", bounds_picture(r, rep, name),
-                    "level-2 limit mesh, width of the tangent-plane bound (log scale, blue small .. red large)");
-          if (level == std::min(3u, max_level))
-            picture(name + "_limit_L" + std::to_string(level) + ".png", render_mesh(r.limit, Render_options{}, &r.refined),
-                    "limit mesh, level " + std::to_string(level));
-        }
-      }
-      t.add_rule();
-    }
-  }
-  rep.json["runs"] = rows;
-  rep.json["notes"] =
-      "distances in mesh units; d(control) is the level-k control mesh (level 0: the input); tightness = "
-      "max(|lower|, |upper|) / sampled max offset per face, mean over faces with a nonzero offset; thesis = the "
-      "construction as printed (not a bound); outside = samples outside the three bounds (must be 0)";
-  rep.add_note(
-      "Loop limit meshes against the exact limit surface (thesis Sec. 5.2, 5.4.1): distances sampled by exact\n"
-      "(GMP) evaluation at the dyadic points of every face (45 per face up to level 2, 15 beyond); rounding =\n"
-      "max |limit vertex - exact limit vertex|; tightness = bound / sampled max normal offset (mean over faces;\n"
-      "thesis = the construction as printed, not a bound); outside = samples outside a bound beyond 1e-13 x mesh\n"
-      "size (must be 0; float's single-precision bounds miss by its own rounding, ~1e-7). exact and mpfr-53 use\n"
-      "reduced bound depths (irregular 2, regular 1, universal 3: hence looser) and run where feasible in the\n"
-      "section's minute (mpfr-53 to level 2; exact to level 2 on the creased box, level 0 on the icosahedron,\n"
-      "whose valence-5 weights are 256-bit rationals).\n"
-      "Pictures: DIR/subdivision/<mesh>_control.png, <mesh>_limit_L3.png, <mesh>_bounds_L2.png (tangent-plane\n"
-      "bound width per face, log colour scale blue..red).\n\n");
-  rep.add_table(t);
-  rep.add_gallery("Control meshes, limit meshes and bound widths (kernel double)", std::move(pictures));
-  rep.add_headline("Samples of the exact limit surface outside a certified bound (all kernels but float)",
-                   std::to_string(outside_total));
-  if (icosahedron_l2_limit >= 0)
-    rep.add_headline("Icosahedron, level-2 limit mesh (double): largest distance to the exact limit surface",
-                     g3(icosahedron_l2_limit));
-  return rep;
-}
+Section_report subdivision_section(const Experiment_context& ctx) { return Subdivision_experiment(ctx).run(); }
 
 }  // namespace relgeo::tool

@@ -99,128 +99,171 @@ Json control_boolean_row(const Solid_pair_case& c, const std::string& kernel, Te
   return j;
 }
 
+Json level_json(const Solid_pair_case& c, unsigned level, const std::string& kernel, const Subdivision_boolean_run& run,
+                const std::string& status, double ratio) {
+  Json j;
+  j["case"] = c.name;
+  j["level"] = level;
+  j["kernel"] = kernel;
+  j["kernel_model"] = run.kernel_model;
+  j["status"] = status;
+  j["faces"] = run.control.faces.size();
+  j["counts"] = {{"curve_vertices", run.counts.curve_vertices},
+                 {"curve_edges", run.counts.curve_edges},
+                 {"bad_faces", {run.counts.bad_faces[0], run.counts.bad_faces[1]}},
+                 {"fitted_vertices", run.counts.fitted_vertices}};
+  j["distance"] = {{"subdivision_to_polyhedral", surface_distance_json(run.distance)},
+                   {"subdivision_to_polyhedral_fitted", surface_distance_json(run.distance_fitted)}};
+  j["fitted"] = run.fitted;
+  j["ratio_to_previous_level"] = io::json_measure(ratio);
+  j["validation"] = run.ok ? subdivision_validation_json(run.validation) : Json(nullptr);
+  j["polyhedral_validation"] = run.polyhedral.ok ? io::solid_report_json(run.polyhedral.validation) : Json(nullptr);
+  j["time_s"] = timing_json(run.time);
+  return j;
+}
+
+/// The section's runs: every case under every kernel at levels 0..max, into
+/// one table, the run records, the pictures, the decay of the distance and
+/// the count of certified results.
+class Subdivision_boolean_experiment {
+ public:
+  explicit Subdivision_boolean_experiment(const Experiment_context& ctx)
+      : ctx_(ctx),
+        kernels_(ctx.quick ? std::vector<std::string>{"filtered"}
+                           : std::vector<std::string>{"filtered", "exact", "failsafe"}),
+        max_level_(ctx.quick ? 2 : 3) {
+    table_.set_left_columns(4);
+  }
+
+  Section_report run() && {
+    for (const Solid_pair_case& c : solid_pair_cases())
+      for (const std::string& kernel : kernels_) run_levels(c, kernel);
+    return std::move(*this).finish();
+  }
+
+ private:
+  static constexpr unsigned picture_extra_levels = 2;
+  static constexpr double min_decay = 2;  ///< per level, from level 1 on (issue 12)
+
+  /// Levels 0..max of one case under one kernel, and the decay of the
+  /// unfitted distance from level 1 to the last level.
+  void run_levels(const Solid_pair_case& c, const std::string& kernel) {
+    ctx_.progress(c.name + ": level 0, " + kernel);
+    rows_.push_back(control_boolean_row(c, kernel, table_));
+    double previous = std::nan(""), first = std::nan(""), last = std::nan("");
+    for (unsigned level = 1; level <= max_level_; ++level) {
+      const double d = run_level(c, kernel, level, previous);
+      previous = d;
+      if (level == 1) first = d;
+      last = d;
+    }
+    decay_.push_back(c.name + " " + kernel + ": " + g3(first) + " -> " + g3(last) + " (x" + g3(first / last) + ")");
+    table_.add_rule();
+  }
+
+  /// One level: its row, record, checks and picture; returns its unfitted
+  /// distance (NaN when not measured).
+  double run_level(const Solid_pair_case& c, const std::string& kernel, unsigned level, double previous) {
+    ctx_.progress(c.name + ": level " + std::to_string(level) + ", " + kernel);
+    Subdivision_boolean_run run;
+    std::string status;
+    try {
+      Subdivision_boolean_options options;
+      options.fit = true;
+      run = evaluate_subdivision_boolean(kernel, c.a, c.b, c.op, level, options);
+      status = run.ok ? "ok" : "failed: " + run.failure;
+    } catch (const std::exception& e) {
+      status = std::string("refused: ") + e.what();
+    }
+    const double d = run.ok && run.distance.measured() ? run.distance.hausdorff() : std::nan("");
+    const double df = run.ok && run.distance_fitted.measured() ? run.distance_fitted.hausdorff() : std::nan("");
+    const double ratio = previous / d;
+    if (run.certified && run.ok) check_certified(c, kernel, level, run, d, df, ratio);
+    table_.add_row({c.name, std::to_string(level), kernel, status.substr(0, 40),
+                    run.ok ? std::to_string(run.control.faces.size()) : "-",
+                    run.ok ? std::to_string(run.counts.curve_edges) : "-", g3(d), g3(df),
+                    !run.ok ? "-" : run.fitted ? "fitted" : "unfitted", g3(ratio),
+                    run.ok ? run.validation.summary() : "-", ms(run.time.total()), ms(run.time.layer()),
+                    ms(run.time.boolean)});
+    rows_.push_back(level_json(c, level, kernel, run, status, ratio));
+    if (kernel == "filtered" && run.ok) add_picture(c, level, run);
+    return d;
+  }
+
+  /// A certified result has no defect; the bars of issue 12: the distance
+  /// falls at least 2x per level, the kept mesh is never the farther one.
+  void check_certified(const Solid_pair_case& c, const std::string& kernel, unsigned level,
+                       const Subdivision_boolean_run& run, double d, double df, double ratio) {
+    const std::string where = c.name + " at level " + std::to_string(level) + " under " + kernel + ": ";
+    ++certified_runs_;
+    if (run.validation.has_no_defect()) ++certified_clean_;
+    else rep_.failures.push_back(where + "certified result with a defect: " + run.validation.summary());
+    if (ratio < min_decay)
+      rep_.failures.push_back(where + "the distance fell only x" + g3(ratio) + " from the previous level");
+    if (run.fitted && !(df <= d)) rep_.failures.push_back(where + "kept the fitted mesh though it is farther");
+  }
+
+  void add_picture(const Solid_pair_case& c, unsigned level, const Subdivision_boolean_run& run) {
+    ctx_.progress(c.name + ": picture of level " + std::to_string(level));
+    Render_options ro;
+    ro.highlight_creases = true;
+    ro.azimuth_deg = c.azimuth_deg;
+    const auto path = ctx_.section_dir() / (c.file + "_level" + std::to_string(level) + ".png");
+    io::write_png(path.string(), render_mesh(finer_limit_mesh(run.control, picture_extra_levels, {}), ro));
+    pictures_.push_back({ctx_.relative(path), c.name + ", level " + std::to_string(level) +
+                                                  " (filtered): limit surface, creases red"});
+  }
+
+  Section_report finish() && {
+    rep_.json["runs"] = rows_;
+    rep_.json["levels"] = max_level_;
+    rep_.json["kernels"] = kernels_;
+    rep_.json["notes"] =
+        "level 0: the mesh Boolean of the two control meshes; level k >= 1: relgeo::subdivision_boolean with fitting. "
+        "d = sampled Hausdorff distance between the result's limit surface and the polyhedral result (the Boolean of "
+        "the two level-k limit meshes), before fitting; d fitted = the same after fitting; kept = which control mesh "
+        "the result keeps; ratio = d at the previous level / d; validation = validate_subdivision_solid (level 0: "
+        "validate_solid of the control meshes' Boolean); layer = mapping, cutting, merging and tagging.";
+    rep_.add_note(
+        "Booleans of Loop subdivision solids (thesis Ch. 5): level 0 is the mesh Boolean of the control meshes; at\n"
+        "level k the limit meshes' Boolean (the polyhedral result) is mapped back to the level-k control meshes, which\n"
+        "are cut and merged along the curves (tagged as creases), then fitted (least squares near the curves).\n"
+        "d = sampled Hausdorff distance from the result's limit surface to the polyhedral result (d fitted: after\n"
+        "fitting; kept: the closer mesh), ratio = d of the previous level / d. validation: each check of the\n"
+        "subdivision solid that did not pass (adjacent pieces: undecided around extraordinary and irregular crease\n"
+        "vertices, which have no Bezier net), 'certified' when all pass. Under a certified kernel, a failed check,\n"
+        "a ratio below 2 or a kept fitted mesh farther than the unfitted one is a failure of the section; a kernel\n"
+        "that cannot decide reports 'failed' with the reason.\n"
+        "Pictures: DIR/subdivision-boolean/*.png (limit surfaces " +
+        std::to_string(picture_extra_levels) + " levels finer than the control mesh).\n\n");
+    rep_.add_table(table_);
+    std::string decay_note = "Decay of d from level 1 to level " + std::to_string(max_level_) + ":\n";
+    for (const std::string& line : decay_) decay_note += "  " + line + "\n";
+    rep_.add_note(decay_note + "\n");
+    rep_.json["decay"] = decay_;
+    rep_.add_gallery("Limit surfaces of the subdivision results, creases in red (kernel filtered)", std::move(pictures_));
+    rep_.add_headline("Certified subdivision Boolean results without a failed check",
+                      std::to_string(certified_clean_) + " of " + std::to_string(certified_runs_));
+    if (!decay_.empty()) rep_.add_headline("Distance decay, level 1 to " + std::to_string(max_level_), decay_.front());
+    return std::move(rep_);
+  }
+
+  const Experiment_context& ctx_;
+  const std::vector<std::string> kernels_;
+  const unsigned max_level_;
+  Section_report rep_;
+  Text_table table_{{"case", "level", "kernel", "status", "faces", "curve edges", "d", "d fitted", "kept", "ratio",
+                     "validation", "time ms", "layer ms", "boolean ms"}};
+  Json rows_ = Json::array();
+  std::vector<Picture> pictures_;
+  std::size_t certified_runs_ = 0, certified_clean_ = 0;
+  std::vector<std::string> decay_;  ///< per case and kernel
+};
+
 }  // namespace
 
 Section_report subdivision_boolean_section(const Experiment_context& ctx) {
-  Section_report rep;
-  const std::vector<std::string> kernels =
-      ctx.quick ? std::vector<std::string>{"filtered"} : std::vector<std::string>{"filtered", "exact", "failsafe"};
-  const unsigned max_level = ctx.quick ? 2 : 3;
-  const unsigned picture_extra_levels = 2;
-  const double min_decay = 2;  // per level, from level 1 on (issue 12)
-  Text_table t({"case", "level", "kernel", "status", "faces", "curve edges", "d", "d fitted", "kept", "ratio",
-                "validation", "time ms", "layer ms", "boolean ms"});
-  t.set_left_columns(4);
-  Json rows = Json::array();
-  std::vector<Picture> pictures;
-  std::size_t certified_runs = 0, certified_clean = 0;
-  // Decay of the unfitted distance from level 1 to the last level, per case and kernel.
-  std::vector<std::string> decay;
-  for (const Solid_pair_case& c : solid_pair_cases()) {
-    for (const std::string& kernel : kernels) {
-      ctx.progress(c.name + ": level 0, " + kernel);
-      rows.push_back(control_boolean_row(c, kernel, t));
-      double previous = std::nan(""), first = std::nan(""), last = std::nan("");
-      for (unsigned level = 1; level <= max_level; ++level) {
-        ctx.progress(c.name + ": level " + std::to_string(level) + ", " + kernel);
-        Subdivision_boolean_run run;
-        std::string status;
-        try {
-          Subdivision_boolean_options options;
-          options.fit = true;
-          run = evaluate_subdivision_boolean(kernel, c.a, c.b, c.op, level, options);
-          status = run.ok ? "ok" : "failed: " + run.failure;
-        } catch (const std::exception& e) {
-          status = std::string("refused: ") + e.what();
-        }
-        const double d = run.ok && run.distance.measured() ? run.distance.hausdorff() : std::nan("");
-        const double df = run.ok && run.distance_fitted.measured() ? run.distance_fitted.hausdorff() : std::nan("");
-        const double ratio = previous / d;
-        previous = d;
-        if (level == 1) first = d;
-        last = d;
-        if (run.certified && run.ok) {
-          const std::string where = c.name + " at level " + std::to_string(level) + " under " + kernel + ": ";
-          ++certified_runs;
-          if (run.validation.has_no_defect()) ++certified_clean;
-          else rep.failures.push_back(where + "certified result with a defect: " + run.validation.summary());
-          // The bars of issue 12: the distance falls at least 2x per level;
-          // the kept mesh is never the farther one.
-          if (ratio < min_decay)
-            rep.failures.push_back(where + "the distance fell only x" + g3(ratio) + " from the previous level");
-          if (run.fitted && !(df <= d)) rep.failures.push_back(where + "kept the fitted mesh though it is farther");
-        }
-        t.add_row({c.name, std::to_string(level), kernel, status.substr(0, 40),
-                   run.ok ? std::to_string(run.control.faces.size()) : "-",
-                   run.ok ? std::to_string(run.counts.curve_edges) : "-", g3(d), g3(df),
-                   !run.ok ? "-" : run.fitted ? "fitted" : "unfitted", g3(ratio),
-                   run.ok ? run.validation.summary() : "-", ms(run.time.total()), ms(run.time.layer()),
-                   ms(run.time.boolean)});
-        Json j;
-        j["case"] = c.name;
-        j["level"] = level;
-        j["kernel"] = kernel;
-        j["kernel_model"] = run.kernel_model;
-        j["status"] = status;
-        j["faces"] = run.control.faces.size();
-        j["counts"] = {{"curve_vertices", run.counts.curve_vertices},
-                       {"curve_edges", run.counts.curve_edges},
-                       {"bad_faces", {run.counts.bad_faces[0], run.counts.bad_faces[1]}},
-                       {"fitted_vertices", run.counts.fitted_vertices}};
-        j["distance"] = {{"subdivision_to_polyhedral", surface_distance_json(run.distance)},
-                         {"subdivision_to_polyhedral_fitted", surface_distance_json(run.distance_fitted)}};
-        j["fitted"] = run.fitted;
-        j["ratio_to_previous_level"] = io::json_measure(ratio);
-        j["validation"] = run.ok ? subdivision_validation_json(run.validation) : Json(nullptr);
-        j["polyhedral_validation"] = run.polyhedral.ok ? io::solid_report_json(run.polyhedral.validation) : Json(nullptr);
-        j["time_s"] = timing_json(run.time);
-        rows.push_back(j);
-        if (kernel == "filtered" && run.ok) {
-          ctx.progress(c.name + ": picture of level " + std::to_string(level));
-          Render_options ro;
-          ro.highlight_creases = true;
-          ro.azimuth_deg = c.azimuth_deg;
-          const auto path = ctx.section_dir() / (c.file + "_level" + std::to_string(level) + ".png");
-          io::write_png(path.string(), render_mesh(finer_limit_mesh(run.control, picture_extra_levels, {}), ro));
-          pictures.push_back({ctx.relative(path), c.name + ", level " + std::to_string(level) +
-                                                      " (filtered): limit surface, creases red"});
-        }
-      }
-      decay.push_back(c.name + " " + kernel + ": " + g3(first) + " -> " + g3(last) + " (x" + g3(first / last) + ")");
-      t.add_rule();
-    }
-  }
-  rep.json["runs"] = rows;
-  rep.json["levels"] = max_level;
-  rep.json["kernels"] = kernels;
-  rep.json["notes"] =
-      "level 0: the mesh Boolean of the two control meshes; level k >= 1: relgeo::subdivision_boolean with fitting. "
-      "d = sampled Hausdorff distance between the result's limit surface and the polyhedral result (the Boolean of "
-      "the two level-k limit meshes), before fitting; d fitted = the same after fitting; kept = which control mesh "
-      "the result keeps; ratio = d at the previous level / d; validation = validate_subdivision_solid (level 0: "
-      "validate_solid of the control meshes' Boolean); layer = mapping, cutting, merging and tagging.";
-  rep.add_note(
-      "Booleans of Loop subdivision solids (thesis Ch. 5): level 0 is the mesh Boolean of the control meshes; at\n"
-      "level k the limit meshes' Boolean (the polyhedral result) is mapped back to the level-k control meshes, which\n"
-      "are cut and merged along the curves (tagged as creases), then fitted (least squares near the curves).\n"
-      "d = sampled Hausdorff distance from the result's limit surface to the polyhedral result (d fitted: after\n"
-      "fitting; kept: the closer mesh), ratio = d of the previous level / d. validation: each check of the\n"
-      "subdivision solid that did not pass (adjacent pieces: undecided around extraordinary and irregular crease\n"
-      "vertices, which have no Bezier net), 'certified' when all pass. Under a certified kernel, a failed check,\n"
-      "a ratio below 2 or a kept fitted mesh farther than the unfitted one is a failure of the section; a kernel\n"
-      "that cannot decide reports 'failed' with the reason.\n"
-      "Pictures: DIR/subdivision-boolean/*.png (limit surfaces " +
-      std::to_string(picture_extra_levels) + " levels finer than the control mesh).\n\n");
-  rep.add_table(t);
-  std::string decay_note = "Decay of d from level 1 to level " + std::to_string(max_level) + ":\n";
-  for (const std::string& line : decay) decay_note += "  " + line + "\n";
-  rep.add_note(decay_note + "\n");
-  rep.json["decay"] = decay;
-  rep.add_gallery("Limit surfaces of the subdivision results, creases in red (kernel filtered)", std::move(pictures));
-  rep.add_headline("Certified subdivision Boolean results without a failed check",
-                   std::to_string(certified_clean) + " of " + std::to_string(certified_runs));
-  if (!decay.empty()) rep.add_headline("Distance decay, level 1 to " + std::to_string(max_level), decay.front());
-  return rep;
+  return Subdivision_boolean_experiment(ctx).run();
 }
 
 }  // namespace relgeo::tool

@@ -90,8 +90,8 @@ Run_verdict judge(const Boolean_run& run, std::string status, const Oracle_compa
   Run_verdict r;
   r.status = std::move(status);
   const Solid_report& v = run.validation;
-  r.rounding_failed = run.certified && !run.ok && run.failure.rfind("rounding:", 0) == 0;
-  r.solid = (run.ok || r.rounding_failed) && bounds_a_solid(v);
+  r.rounding_failed = run.certified && !run.ok() && run.failure.rfind("rounding:", 0) == 0;
+  r.solid = (run.ok() || r.rounding_failed) && bounds_a_solid(v);
   r.manifold = v.edge_manifold.passed() && v.vertex_manifold.passed();
   r.crossings = v.self_intersection_free.count;
   // The Boolean's own crossings: those of the exact result, known under
@@ -120,10 +120,10 @@ Json run_json(const Boolean_case& c, const std::string& kernel, const Boolean_ru
   j["kernel_model"] = run.kernel_model;
   j["status"] = r.status;
   j["certified"] = run.certified;
-  j["faces"] = run.output.faces.size();
+  j["faces"] = run.mesh.faces.size();
   j["valid"] = r.valid;
   j["valid_before_rounding"] = r.valid_exact;
-  j["validation"] = run.ok || r.rounding_failed ? Json(run.validation.summary()) : Json(nullptr);
+  j["validation"] = run.ok() || r.rounding_failed ? Json(run.validation.summary()) : Json(nullptr);
   j["rounding"] = rounding_repair_json(run.rounding, run.rounding_method);
   j["rounded_self_intersecting_pairs"] = r.crossings;
   j["exact_self_intersecting_pairs"] =
@@ -169,15 +169,16 @@ class Boolean_experiment {
       std::string status;
       try {
         run = evaluate_boolean(kernel, c.a, c.b, c.op, Boolean_options{});
-        status = run.ok ? "ok" : "failed";
+        status = run.ok() ? "ok" : "failed";
       } catch (const std::exception& e) {
+        run.status = Boolean_run::Status::failed;  // refused: no result
         status = std::string("refused: ") + e.what();
       }
       const Run_verdict r = judge(run, std::move(status), oracle);
       tally(c, kernel, run, r);
       add_row(c, kernel, run, r);
       rows_.push_back(run_json(c, kernel, run, r, oracle));
-      if (c.picture && kernel == "filtered" && run.ok) add_picture(c, run);
+      if (c.picture && kernel == "filtered" && run.ok()) add_picture(c, run);
     }
     table_.add_rule();
   }
@@ -185,7 +186,7 @@ class Boolean_experiment {
   /// The repaired roundings, and the certified results: valid as delivered,
   /// valid only before rounding, or a failure of the section.
   void tally(const Boolean_case& c, const std::string& kernel, const Boolean_run& run, const Run_verdict& r) {
-    const bool delivered = run.ok || r.rounding_failed;
+    const bool delivered = run.ok() || r.rounding_failed;
     if (run.certified && run.rounding.rounds > 0 && delivered)
       repaired_.push_back(c.name + " under " + kernel + ": " + std::to_string(run.rounding.defects_before) +
                           " defects after nearest rounding; " + std::to_string(run.rounding.moved_vertices) +
@@ -209,13 +210,13 @@ class Boolean_experiment {
 
   void add_row(const Boolean_case& c, const std::string& kernel, const Boolean_run& run, const Run_verdict& r) {
     const double rel = r.relative_volume_error;
-    const auto yes_no = [&](bool x) { return run.ok ? std::string(x ? "yes" : "NO") : std::string("-"); };
+    const auto yes_no = [&](bool x) { return run.ok() ? std::string(x ? "yes" : "NO") : std::string("-"); };
     table_.add_row({c.name, std::string(to_string(c.op)), kernel, r.status.substr(0, 40),
-                    std::to_string(run.output.faces.size()), yes_no(r.solid), yes_no(r.manifold),
-                    run.ok ? std::to_string(r.crossings) : "-",
+                    std::to_string(run.mesh.faces.size()), yes_no(r.solid), yes_no(r.manifold),
+                    run.ok() ? std::to_string(r.crossings) : "-",
                     run.exact_self_intersecting_pairs ? std::to_string(*run.exact_self_intersecting_pairs) : "-",
-                    run.ok ? g3(run.validation.volume.value) : "-", !run.ok ? "-" : std::isnan(rel) ? "no oracle" : g3(rel),
-                    std::to_string(run.output.tags.creases().size()),
+                    run.ok() ? g3(run.validation.volume.value) : "-", !run.ok() ? "-" : std::isnan(rel) ? "no oracle" : g3(rel),
+                    std::to_string(run.mesh.tags.creases().size()),
                     format_fixed(run.time.total(), 4)});
   }
 
@@ -226,7 +227,7 @@ class Boolean_experiment {
     std::string file = c.name;
     std::replace(file.begin(), file.end(), ' ', '_');
     const auto path = ctx_.section_dir() / (file + ".png");
-    io::write_png(path.string(), render_mesh(run.output, ro));
+    io::write_png(path.string(), render_mesh(run.mesh, ro));
     pictures_.push_back({ctx_.relative(path), c.name + " (filtered): faces by operand, intersection curves red"});
   }
 

@@ -80,21 +80,22 @@ Json control_boolean_row(const Solid_pair_case& c, const std::string& kernel, Te
   std::string status;
   try {
     run = evaluate_boolean(kernel, c.a, c.b, c.op, Boolean_options{});
-    status = run.ok ? "ok" : "failed: " + run.failure;
+    status = run.ok() ? "ok" : "failed: " + run.failure;
   } catch (const std::exception& e) {
+    run.status = Boolean_run::Status::failed;  // refused: no result
     status = std::string("refused: ") + e.what();
   }
-  t.add_row({c.name, "0", kernel, status.substr(0, 40), run.ok ? std::to_string(run.output.faces.size()) : "-",
-             run.ok ? std::to_string(run.output.tags.creases().size()) : "-", "-", "-", "-", "-",
-             run.ok ? run.validation.summary() : "-", ms(run.time.total()), "-", ms(run.time.total())});
+  t.add_row({c.name, "0", kernel, status.substr(0, 40), run.ok() ? std::to_string(run.mesh.faces.size()) : "-",
+             run.ok() ? std::to_string(run.mesh.tags.creases().size()) : "-", "-", "-", "-", "-",
+             run.ok() ? run.validation.summary() : "-", ms(run.time.total()), "-", ms(run.time.total())});
   Json j;
   j["case"] = c.name;
   j["level"] = 0;
   j["kernel"] = kernel;
   j["status"] = status;
-  j["faces"] = run.output.faces.size();
-  j["curve_edges"] = run.output.tags.creases().size();
-  j["polyhedral_validation"] = run.ok ? io::solid_report_json(run.validation) : Json(nullptr);
+  j["faces"] = run.mesh.faces.size();
+  j["curve_edges"] = run.mesh.tags.creases().size();
+  j["polyhedral_validation"] = run.ok() ? io::solid_report_json(run.validation) : Json(nullptr);
   j["time_s"] = {{"boolean", run.time.total()}};
   return j;
 }
@@ -116,8 +117,8 @@ Json level_json(const Solid_pair_case& c, unsigned level, const std::string& ker
                    {"subdivision_to_polyhedral_fitted", surface_distance_json(run.distance_fitted)}};
   j["fitted"] = run.fitted;
   j["ratio_to_previous_level"] = io::json_measure(ratio);
-  j["validation"] = run.ok ? subdivision_validation_json(run.validation) : Json(nullptr);
-  j["polyhedral_validation"] = run.polyhedral.ok ? io::solid_report_json(run.polyhedral.validation) : Json(nullptr);
+  j["validation"] = run.ok() ? subdivision_validation_json(run.validation) : Json(nullptr);
+  j["polyhedral_validation"] = run.polyhedral.ok() ? io::solid_report_json(run.polyhedral.validation) : Json(nullptr);
   j["time_s"] = timing_json(run.time);
   return j;
 }
@@ -171,22 +172,22 @@ class Subdivision_boolean_experiment {
       Subdivision_boolean_options options;
       options.fit = true;
       run = evaluate_subdivision_boolean(kernel, c.a, c.b, c.op, level, options);
-      status = run.ok ? "ok" : "failed: " + run.failure;
+      status = run.ok() ? "ok" : "failed: " + run.failure;
     } catch (const std::exception& e) {
       status = std::string("refused: ") + e.what();
     }
-    const double d = run.ok && run.distance.measured() ? run.distance.hausdorff() : std::nan("");
-    const double df = run.ok && run.distance_fitted.measured() ? run.distance_fitted.hausdorff() : std::nan("");
+    const double d = run.ok() && run.distance.measured() ? run.distance.hausdorff() : std::nan("");
+    const double df = run.ok() && run.distance_fitted.measured() ? run.distance_fitted.hausdorff() : std::nan("");
     const double ratio = previous / d;
-    if (run.certified && run.ok) check_certified(c, kernel, level, run, d, df, ratio);
+    if (run.certified && run.ok()) check_certified(c, kernel, level, run, d, df, ratio);
     table_.add_row({c.name, std::to_string(level), kernel, status.substr(0, 40),
-                    run.ok ? std::to_string(run.control.faces.size()) : "-",
-                    run.ok ? std::to_string(run.counts.curve_edges) : "-", g3(d), g3(df),
-                    !run.ok ? "-" : run.fitted ? "fitted" : "unfitted", g3(ratio),
-                    run.ok ? run.validation.summary() : "-", ms(run.time.total()), ms(run.time.layer()),
+                    run.ok() ? std::to_string(run.control.faces.size()) : "-",
+                    run.ok() ? std::to_string(run.counts.curve_edges) : "-", g3(d), g3(df),
+                    !run.ok() ? "-" : run.fitted ? "fitted" : "unfitted", g3(ratio),
+                    run.ok() ? run.validation.summary() : "-", ms(run.time.total()), ms(run.time.layer()),
                     ms(run.time.boolean)});
     rows_.push_back(level_json(c, level, kernel, run, status, ratio));
-    if (kernel == "filtered" && run.ok) add_picture(c, level, run);
+    if (kernel == "filtered" && run.ok()) add_picture(c, level, run);
     return d;
   }
 

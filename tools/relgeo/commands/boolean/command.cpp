@@ -27,14 +27,14 @@ int run_boolean_command(const Boolean_command_options& o, Streams io) {
                                                            .delaunay_retriangulation =
                                                                parse_delaunay_retriangulation(o.retriangulation)});
   std::optional<Oracle_comparison> oracle;
-  if (o.oracle == "cgal") oracle = compare_with_cgal(a, b, op, run.output);
-  if (!o.output.empty()) write_mesh(o.output, run.output);
-  if (!o.tags_output.empty()) write_feature_tags(o.tags_output, run.output.tags);
+  if (o.oracle == "cgal") oracle = compare_with_cgal(a, b, op, run.mesh);
+  if (!o.output.empty()) write_mesh(o.output, run.mesh);
+  if (!o.tags_output.empty()) write_feature_tags(o.tags_output, run.mesh.tags);
   if (!o.png.empty()) {
     Render_options ro;
     ro.highlight_creases = true;
     for (const Face_origin& f : run.provenance) ro.face_groups.push_back(f.operand);
-    io::write_png(o.png, render_mesh(run.output, ro));
+    io::write_png(o.png, render_mesh(run.mesh, ro));
   }
   const Boolean_report_input in{o.op, o.a, o.b, &a, &b, &run, oracle ? &*oracle : nullptr};
   const io::Json json = boolean_report_json(in);
@@ -45,7 +45,7 @@ int run_boolean_command(const Boolean_command_options& o, Streams io) {
   }
   if (o.format == Format::json) io.out << io::dump_json(json) << '\n';
   else io.out << boolean_report_text(in);
-  if (!run.ok) {
+  if (!run.ok()) {
     io.err << "relgeo: failure: the Boolean under kernel '" << o.kernel << "' failed: " << run.failure << '\n';
     return exit_failure;
   }

@@ -23,7 +23,7 @@ Subdivision_boolean_run evaluate_subdivision_boolean(const std::string& kernel, 
     const Subdivision_boolean_result<K> r = relgeo::subdivision_boolean(a, b, op, levels, k, options);
     Subdivision_boolean_run run;
     set_kernel_fields<K>(run, entry.label());
-    run.ok = r.ok();
+    run.succeeded = r.ok();
     run.failure = r.failure;
     run.level = r.level;
     run.polyhedral = boolean_run_of(r.polyhedral, entry.label());

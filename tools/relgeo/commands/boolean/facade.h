@@ -33,22 +33,12 @@ bool parse_delaunay_retriangulation(const std::string& name);
 /// --retriangulation delaunay|insertion (boolean and csg).  [options.cpp]
 void add_retriangulation_option(CLI::App& cmd, std::string& retriangulation);
 
-/// One Boolean under one kernel.
-struct Boolean_run {
+/// One Boolean under one kernel: relgeo's kernel-free output (the mesh, status,
+/// provenance, rounding, validation, counts, times) and what the tool adds.
+struct Boolean_run : Boolean_output {
   std::string kernel, kernel_model;
   bool certified = false, exact = false;
-  bool ok = false;
-  std::string failure;
-  std::vector<std::pair<Index, Index>> undecided_pairs;
-  Mesh_double output;
-  double rounding_error = 0;
   std::string rounding_method = "nearest";  ///< repaired | nearest, as run
-  Rounding_repair_report rounding;
-  std::vector<Face_origin> provenance;
-  Boolean_counts counts;
-  Boolean_timing time;
-  /// validate_solid on the output's doubles (exact predicates).
-  Solid_report validation;
   /// Exact_kernel only: self-intersecting face pairs of the result before
   /// rounding (its exact vertices); tells rounding's crossings from the
   /// Boolean's own.

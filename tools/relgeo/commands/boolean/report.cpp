@@ -39,9 +39,9 @@ io::Json boolean_report_json(const Boolean_report_input& in) {
     pairs.push_back({r.undecided_pairs[i].first, r.undecided_pairs[i].second});
   j["undecided_pairs"] = pairs;
   j["operands"] = {{"a", operand_json(in.input_a, *in.a)}, {"b", operand_json(in.input_b, *in.b)}};
-  j["output"] = {{"vertices", r.output.vertices.size()}, {"faces", r.output.faces.size()},
-                 {"creases", r.output.tags.creases().size()}};
-  j["validation"] = r.ok ? io::solid_report_json(r.validation) : io::Json(nullptr);
+  j["output"] = {{"vertices", r.mesh.vertices.size()}, {"faces", r.mesh.faces.size()},
+                 {"creases", r.mesh.tags.creases().size()}};
+  j["validation"] = r.ok() ? io::solid_report_json(r.validation) : io::Json(nullptr);
   j["exact_self_intersecting_pairs"] =
       r.exact_self_intersecting_pairs ? io::Json(*r.exact_self_intersecting_pairs) : io::Json(nullptr);
   j["rounding_error"] = io::json_measure(r.rounding_error);
@@ -73,12 +73,12 @@ std::string boolean_report_text(const Boolean_report_input& in) {
   s << "operation        " << in.operation << " of " << in.input_a << " (" << in.a->faces.size() << " faces) and "
     << in.input_b << " (" << in.b->faces.size() << " faces)\n";
   s << "kernel           " << r.kernel << (r.certified ? " (certified)" : " (naive: answers may be wrong)") << "\n";
-  s << "status           " << (r.ok ? "ok" : "failed: " + r.failure) << "\n";
+  s << "status           " << (r.ok() ? "ok" : "failed: " + r.failure) << "\n";
   if (!r.undecided_pairs.empty()) s << "undecided pairs  " << r.undecided_pairs.size() << "\n";
-  s << "output           " << r.output.vertices.size() << " vertices, " << r.output.faces.size() << " faces, "
-    << r.output.tags.creases().size() << " crease edges (the intersection curves)\n";
+  s << "output           " << r.mesh.vertices.size() << " vertices, " << r.mesh.faces.size() << " faces, "
+    << r.mesh.tags.creases().size() << " crease edges (the intersection curves)\n";
   const Solid_report& v = r.validation;
-  if (r.ok) {
+  if (r.ok()) {
     std::snprintf(buf, sizeof buf, "%.17g", v.volume.value);
     s << "volume           " << buf << "\n";
     s << "validation       " << v.summary() << "\n";

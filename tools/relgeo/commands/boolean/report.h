@@ -43,7 +43,7 @@ void put_run_header(io::Json& j, const std::string& operation, const Run& r) {
   j["kernel"] = r.kernel;
   j["kernel_model"] = r.kernel_model;
   j["certified"] = r.certified;
-  j["status"] = r.ok ? "ok" : "failed";
+  j["status"] = r.ok() ? "ok" : "failed";
   j["failure"] = r.failure;
 }
 /// {file, vertices, faces, volume} of an operand (volume: sum of the faces' signed tetrahedra in doubles).

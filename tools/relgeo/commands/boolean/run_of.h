@@ -19,22 +19,13 @@ void set_kernel_fields(Run& run, const std::string& kernel_label) {
   run.exact = K::has_exact_predicates;
 }
 
-/// Every field of `run` that `r` and the kernel determine (not
+/// `r`'s kernel-free output with the kernel's fields (not
 /// exact_self_intersecting_pairs: an extra computation, left to the caller).
 template <class K>
 Boolean_run boolean_run_of(const Boolean_result<K>& r, const std::string& kernel_label) {
   Boolean_run run;
+  static_cast<Boolean_output&>(run) = r;
   set_kernel_fields<K>(run, kernel_label);
-  run.ok = r.ok();
-  run.failure = r.failure;
-  run.undecided_pairs = r.undecided_pairs;
-  run.output = r.mesh;
-  run.rounding_error = r.rounding_error;
-  run.rounding = r.rounding;
-  run.provenance = r.provenance;
-  run.counts = r.counts;
-  run.time = r.time;
-  run.validation = r.validation;
   return run;
 }
 

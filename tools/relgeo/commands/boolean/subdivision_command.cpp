@@ -34,12 +34,12 @@ int run_subdivision_boolean_command(const Boolean_command_options& o, Streams io
   options.mesh.check_self_intersections = !o.skip_self_intersection_check;
   options.fit = o.fit;
   const Subdivision_boolean_run run = evaluate_subdivision_boolean(o.kernel, a, b, op, o.levels, options);
-  if (run.ok) {
+  if (run.ok()) {
     if (!o.output.empty()) write_mesh(o.output, run.control);
     if (!o.tags_output.empty()) write_feature_tags(o.tags_output, run.control.tags);
     if (!o.png.empty()) write_subdivision_png(o.png, run, options.loop);
   }
-  if (!o.polyhedral_output.empty() && run.polyhedral.ok) write_mesh(o.polyhedral_output, run.polyhedral.output);
+  if (!o.polyhedral_output.empty() && run.polyhedral.ok()) write_mesh(o.polyhedral_output, run.polyhedral.mesh);
   const Subdivision_boolean_report_input in{o.op, o.a, o.b, &a, &b, &run};
   const io::Json json = subdivision_boolean_report_json(in);
   if (!o.report.empty()) {
@@ -49,7 +49,7 @@ int run_subdivision_boolean_command(const Boolean_command_options& o, Streams io
   }
   if (o.format == Format::json) io.out << io::dump_json(json) << '\n';
   else io.out << subdivision_boolean_report_text(in);
-  if (!run.ok) {
+  if (!run.ok()) {
     io.err << "relgeo: failure: the subdivision Boolean under kernel '" << o.kernel << "' failed: " << run.failure << '\n';
     return exit_failure;
   }

@@ -18,12 +18,12 @@ namespace relgeo::tool {
 struct Subdivision_boolean_run {
   std::string kernel, kernel_model;
   bool certified = false, exact = false;
-  bool ok = false;
+  bool succeeded = false;
   std::string failure;
   unsigned level = 0;
   /// The Boolean of the two limit meshes at `level` (its
   /// exact_self_intersecting_pairs is not computed here).
-  Boolean_run polyhedral;
+  Boolean_run polyhedral = not_run();
   /// The subdivision result (crease tags: the curves and the operands'
   /// creases) and the same before fitting.
   Mesh_double control, unfitted;
@@ -33,6 +33,16 @@ struct Subdivision_boolean_run {
   Subdivision_validation validation;
   Subdivision_boolean_counts counts;
   Subdivision_boolean_timing time;
+
+  bool ok() const { return succeeded; }
+
+ private:
+  // A run that did not reach the polyhedral Boolean has none.
+  static Boolean_run not_run() {
+    Boolean_run r;
+    r.status = Boolean_output::Status::failed;
+    return r;
+  }
 };
 
 /// relgeo::subdivision_boolean(a, b, op, levels, K, options) for the kernel

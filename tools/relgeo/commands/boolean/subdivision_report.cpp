@@ -65,7 +65,7 @@ io::Json subdivision_boolean_report_json(const Subdivision_boolean_report_input&
                  {"fitted_vertices", r.counts.fitted_vertices}};
   j["distance"] = {{"subdivision_to_polyhedral", surface_distance_json(r.distance)},
                    {"subdivision_to_polyhedral_fitted", surface_distance_json(r.distance_fitted)}};
-  j["validation"] = r.ok ? subdivision_validation_json(r.validation) : io::Json(nullptr);
+  j["validation"] = r.ok() ? subdivision_validation_json(r.validation) : io::Json(nullptr);
   io::Json polyhedral = boolean_report_json({in.operation, in.input_a, in.input_b, in.a, in.b, &r.polyhedral, nullptr});
   for (const char* key : {"operation", "kernel", "kernel_model", "certified", "operands", "exact_self_intersecting_pairs"})
     polyhedral.erase(key);
@@ -84,7 +84,7 @@ std::string subdivision_boolean_report_text(const Subdivision_boolean_report_inp
                          " faces) and " + in.input_b + " (" + std::to_string(in.b->faces.size()) + " faces)");
   s.add("level", std::to_string(r.level));
   s.add("kernel", r.kernel + (r.certified ? " (certified)" : " (naive: answers may be wrong)"));
-  s.add("status", r.ok ? "ok" : "failed: " + r.failure);
+  s.add("status", r.ok() ? "ok" : "failed: " + r.failure);
   s.add("control mesh", std::to_string(r.control.vertices.size()) + " vertices, " +
                             std::to_string(r.control.faces.size()) + " faces, " +
                             std::to_string(r.control.tags.creases().size()) + " crease edges, " +
@@ -96,15 +96,15 @@ std::string subdivision_boolean_report_text(const Subdivision_boolean_report_inp
   if (r.distance_fitted.measured() || r.counts.fitted_vertices)
     s.add("distance fitted", distance_text(r.distance_fitted) + "; " + std::to_string(r.counts.fitted_vertices) +
                                  " control vertices moved, " + (r.fitted ? "fitted mesh kept" : "not closer: unfitted mesh kept"));
-  if (r.ok) {
+  if (r.ok()) {
     const Subdivision_validation& v = r.validation;
     s.add("validation", v.summary());
     s.add("face pairs", std::to_string(v.candidate_pairs) + " candidates, " + std::to_string(v.separated_pairs) +
                             " separated, " + std::to_string(v.adjacent_pairs) + " adjacent (" + std::to_string(v.certified_adjacent_pairs) + " certified), " +
                             std::to_string(v.separated_pieces.count) + " far pairs undecided");
   }
-  if (r.polyhedral.ok)
-    s.add("polyhedral", std::to_string(r.polyhedral.output.faces.size()) + " faces (the Boolean of the limit meshes), " +
+  if (r.polyhedral.ok())
+    s.add("polyhedral", std::to_string(r.polyhedral.mesh.faces.size()) + " faces (the Boolean of the limit meshes), " +
                             r.polyhedral.validation.summary());
   const Subdivision_boolean_timing& t = r.time;
   s.add("time", format_fixed(t.total(), 4) + " s (limit meshes " + format_fixed(t.limit_meshes, 4) + ", boolean " +

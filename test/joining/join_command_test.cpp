@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 #include "relgeo/joining/join_command.h"
-#include "relgeo/joining/test_models.h"
+#include "relgeo_fixtures/joining/test_models.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 # Tool tests of `relgeo join` and the "joining" experiment section (included
 # from CMakeLists.txt inside if(RELGEO_BUILD_TESTS), with relgeo_tool_test and
-# _tmp defined there). Inputs in testdata/, made by the library
-# (relgeo/joining/test_models.h, as the joining section's inputs are):
+# _tmp defined there). Inputs in testdata/, made by the fixtures
+# (relgeo_fixtures/joining/test_models.h, as the joining section's inputs are):
 #   join_folding.json, join_folding_{0,1}.off  folding_case(): two planes,
 #       patch 0 with a thin strip along the seam, patch 1 overlapping it
 #   join_folding_far.off  patch 0 moved 3 along x: beyond face 0's domain

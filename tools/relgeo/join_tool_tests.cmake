@@ -97,3 +97,13 @@ relgeo_tool_test(experiment_quick_joining 0
         ${_tmp}/results_joining/joining/folding_whitney.svg
         ${_tmp}/results_joining/joining/inputs/folding.json
   JSON_FILES ${_tmp}/results_joining/joining.json)
+
+# run_join_with (commands/join/run_with.h), the body of `relgeo join`, from
+# files to files under the kernels directly: GoogleTest, relgeo_add_test of
+# test/CMakeLists.txt (include folder: this one).
+find_package(GTest REQUIRED)
+set(_join_test_libs relgeo::cgal relgeo::eigen relgeo::io relgeo_fixtures)
+if(TARGET relgeo::occt)
+  list(APPEND _join_test_libs relgeo::occt)
+endif()
+relgeo_add_test(relgeo_tool_join_tests SOURCES commands/join/run_with_test.cpp LIBS ${_join_test_libs})

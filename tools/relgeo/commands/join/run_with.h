@@ -103,12 +103,12 @@ Join_command_report run_join_with(const Join_command_options& o) {
   r.faces = model.faces.size();
   Join_result result;
   if (o.method == "whitney") {
-    result = join_meshes<K>(model, meshes, o.join);
+    result = join_meshes(model, meshes, K{}, o.join);
   } else if (o.method == "naive") {
-    result = naive_sewing<K>(model, meshes, o.join);
+    result = naive_sewing(model, meshes, K{}, o.join);
   } else if (o.method == "occt") {
 #ifdef RELGEO_HAS_OCCT
-    result = occt_sewing<K>(model, meshes, o.occt);
+    result = occt_sewing(model, meshes, K{}, o.occt);
 #else
     throw Invalid_input("method occt needs relgeo built with OpenCASCADE (relgeo::occt)");
 #endif

@@ -29,6 +29,7 @@
 #include "relgeo/hull/cgal_convex_hull.h"
 #include "relgeo/kernel.h"
 #include "relgeo/kernel/cgal_kernel.h"
+#include "relgeo_fixtures/curves/test_contours.h"
 
 namespace {
 

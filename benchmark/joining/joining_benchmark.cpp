@@ -32,7 +32,7 @@
 #include "common/command_line.h"
 #include "relgeo/joining/joiner.h"
 #include "relgeo/joining/naive_sewing.h"
-#include "relgeo/joining/test_models.h"
+#include "relgeo_fixtures/joining/test_models.h"
 #ifdef RELGEO_HAS_OCCT
 #include "relgeo/joining/occt_sewing.h"
 #endif

@@ -34,8 +34,8 @@
 #include "relgeo/io/png.h"
 #include "relgeo/joining/joiner.h"
 #include "relgeo/joining/naive_sewing.h"
-#include "relgeo/joining/test_models.h"
 #include "relgeo/kernel.h"
+#include "relgeo_fixtures/joining/test_models.h"
 
 namespace relgeo_figures {
 

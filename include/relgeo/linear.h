@@ -1,8 +1,9 @@
 // relgeo/linear.h — umbrella header of the linear-equation area (thesis
 // Sec. 3.2): Gaussian elimination variants in any scalar, Eigen's LU as peers,
-// exact rational solutions, backward/forward errors and condition numbers,
-// Hilbert matrices and the thesis' example. Needs Eigen 3.3+ on the include
-// path (CMake: Eigen3::Eigen).
+// exact rational solutions, backward/forward errors and condition numbers.
+// Needs Eigen 3.3+ on the include path (CMake: Eigen3::Eigen). (The thesis'
+// example and Hilbert systems are fixtures, not library:
+// fixtures/relgeo_fixtures/linear/test_problems.h.)
 #pragma once
 
 #include "relgeo/linear/backward_error.h"
@@ -10,4 +11,3 @@
 #include "relgeo/linear/gaussian_elimination.h"
 #include "relgeo/linear/scalar_traits.h"
 #include "relgeo/linear/solvers.h"
-#include "relgeo/linear/test_problems.h"

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "relgeo/curves/contour.h"
-#include "relgeo/curves/test_contours.h"
+#include "relgeo_fixtures/curves/test_contours.h"
 
 namespace relgeo::test {
 namespace {

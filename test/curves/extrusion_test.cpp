@@ -9,6 +9,7 @@
 
 #include "relgeo/curves.h"
 #include "relgeo/kernel.h"
+#include "relgeo_fixtures/curves/test_contours.h"
 #include "support/fp_environments.h"
 
 namespace relgeo::test {

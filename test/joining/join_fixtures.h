@@ -1,5 +1,6 @@
-// The joining cases the joiner tests share (made by relgeo/joining/test_models.h)
-// and the invariants every Whitney result must satisfy.
+// The joining cases the joiner tests share (made by the fixtures of
+// relgeo_fixtures/joining/test_models.h) and the invariants every Whitney
+// result must satisfy.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -8,7 +9,7 @@
 #include <vector>
 
 #include "relgeo/joining/join_report.h"
-#include "relgeo/joining/test_models.h"
+#include "relgeo_fixtures/joining/test_models.h"
 
 namespace relgeo_test {
 

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "relgeo/linear.h"
+#include "relgeo_fixtures/linear/test_problems.h"
 
 namespace relgeo::test {
 namespace {

@@ -1,7 +1,7 @@
 # Tool tests of `relgeo join` and the "joining" experiment section (included
 # from CMakeLists.txt inside if(RELGEO_BUILD_TESTS), with relgeo_tool_test and
-# _tmp defined there). Inputs in testdata/, made by the library
-# (relgeo/joining/test_models.h, as the joining section's inputs are):
+# _tmp defined there). Inputs in testdata/, made by the fixtures
+# (relgeo_fixtures/joining/test_models.h, as the joining section's inputs are):
 #   join_folding.json, join_folding_{0,1}.off  folding_case(): two planes,
 #       patch 0 with a thin strip along the seam, patch 1 overlapping it
 #   join_folding_far.off  patch 0 moved 3 along x: beyond face 0's domain
@@ -97,3 +97,13 @@ relgeo_tool_test(experiment_quick_joining 0
         ${_tmp}/results_joining/joining/folding_whitney.svg
         ${_tmp}/results_joining/joining/inputs/folding.json
   JSON_FILES ${_tmp}/results_joining/joining.json)
+
+# run_join_with (commands/join/run_with.h), the body of `relgeo join`, from
+# files to files under the kernels directly: GoogleTest, relgeo_add_test of
+# test/CMakeLists.txt (include folder: this one).
+find_package(GTest REQUIRED)
+set(_join_test_libs relgeo::cgal relgeo::eigen relgeo::io relgeo_fixtures)
+if(TARGET relgeo::occt)
+  list(APPEND _join_test_libs relgeo::occt)
+endif()
+relgeo_add_test(relgeo_tool_join_tests SOURCES commands/join/run_with_test.cpp LIBS ${_join_test_libs})

@@ -20,7 +20,7 @@
 #include "commands/hull/facade.h"
 #include "experiment/section.h"
 #include "kernels/registry.h"
-#include "relgeo/curves/test_contours.h"
+#include "relgeo_fixtures/curves/test_contours.h"
 
 namespace relgeo::tool {
 

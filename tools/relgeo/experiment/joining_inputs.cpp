@@ -1,9 +1,9 @@
 // tools/relgeo/experiment/joining_inputs.cpp
 #include "experiment/joining_inputs.h"
 
-#include "relgeo/joining/test_models.h"
 #include "relgeo/mesh/mesh_io.h"
 #include "relgeo/surfaces/surface_json.h"
+#include "relgeo_fixtures/joining/test_models.h"
 
 namespace relgeo::tool {
 

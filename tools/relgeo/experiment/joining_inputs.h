@@ -1,7 +1,7 @@
 // tools/relgeo/experiment/joining_inputs.h — the inputs of the experiment's
-// joining section, made by the library (relgeo/joining/test_models.h) and
-// written as files, so that the section runs exactly what `relgeo join` runs
-// and a reader can repeat any row with the command.
+// joining section, made by the fixtures (relgeo_fixtures/joining/
+// test_models.h) and written as files, so that the section runs exactly what
+// `relgeo join` runs and a reader can repeat any row with the command.
 #pragma once
 
 #include <filesystem>

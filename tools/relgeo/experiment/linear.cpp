@@ -19,7 +19,7 @@
 
 #include "commands/linsolve/facade.h"
 #include "experiment/section.h"
-#include "relgeo/linear/test_problems.h"
+#include "relgeo_fixtures/linear/test_problems.h"
 
 namespace relgeo::tool {
 

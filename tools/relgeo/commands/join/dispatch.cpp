@@ -1,6 +1,6 @@
 // tools/relgeo/commands/join/dispatch.cpp — run_join_tool under the kernels
 // of the joiner's certified checks (the compile firewall: the only file of
-// `join` naming kernel types).
+// `join` naming kernel types and instantiating run_with.h).
 #include <cmath>
 #include <map>
 #include <optional>
@@ -8,9 +8,9 @@
 
 #include "cli/text.h"
 #include "commands/join/facade.h"
+#include "commands/join/run_with.h"
 #include "kernels/dispatch.h"
 #include "relgeo/joining/error_measures.h"
-#include "relgeo/joining/join_command.h"
 #include "relgeo/joining/projection.h"
 
 namespace relgeo::tool {
@@ -79,7 +79,7 @@ std::vector<Join_face_picture> face_pictures(const Surface_model& model, const J
   return out;
 }
 
-/// The library's options from the tool's (already checked).
+/// run_with.h's options from the command line's (already checked).
 Join_command_options library_options(const Join_tool_options& o, const std::string& output) {
   Join_command_options c;
   c.surface = o.surface;
@@ -87,7 +87,6 @@ Join_command_options library_options(const Join_tool_options& o, const std::stri
   c.curves = o.curves;
   c.output = output;
   c.method = o.method;
-  c.kernel = o.kernel;
   c.max_absolute_error = o.max_absolute_error;
   c.max_normal_error = o.max_normal_error;
   c.join.use_edge_curves = !o.no_edge_curves;

@@ -1,5 +1,5 @@
 // tools/relgeo/commands/join/facade.h — what `relgeo join` and the
-// experiment's joining section run: relgeo::run_join_with under a kernel
+// experiment's joining section run: run_join_with (run_with.h) under a kernel
 // named at run time (instantiated in dispatch.cpp only, with the joiner's
 // heavy headers), and the result's triangles classified in each face's (u,v)
 // domain for the pictures. Light: no kernel, CGAL or Eigen header.
@@ -35,19 +35,19 @@ struct Join_face_picture {
 
 /// What one run gives.
 struct Join_tool_result {
-  std::string status = "ok", failure;  ///< relgeo::Join_command_report's verdict
+  std::string status = "ok", failure;  ///< Join_command_report's verdict (run_with.h)
   std::size_t faces = 0;
   Join_report report;
-  io::Json json;                       ///< relgeo::to_json(Join_command_report)
+  io::Json json;                       ///< to_json(Join_command_report) (run_with.h)
   std::string kernel_model;            ///< K::name()
   std::vector<Join_face_picture> pictures;  ///< per face, when asked for
 };
 
-/// Reads, joins and writes `output` as relgeo::run_join_with does, under the
-/// kernel named `options.kernel`, with the options' criteria and joiner
+/// Reads, joins and writes `output` as run_join_with (run_with.h) does, under
+/// the kernel named `options.kernel`, with the options' criteria and joiner
 /// parameters (checked by the command before). With `pictures`, also
 /// classifies the result's triangles per face.
-/// \throws relgeo::Error as run_join does, Usage_error for a kernel join
+/// \throws relgeo::Error as run_join_with does, Usage_error for a kernel join
 /// does not take.
 Join_tool_result run_join_tool(const Join_tool_options& options, const std::string& output, bool pictures);
 

@@ -13,7 +13,7 @@
 #include "relgeo/io/json.h"
 #include "relgeo/io/number_text.h"
 #include "relgeo/io/text_file.h"
-#include "relgeo/linear/test_problems.h"
+#include "relgeo_fixtures/linear/test_problems.h"
 
 namespace relgeo::tool {
 

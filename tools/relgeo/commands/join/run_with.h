@@ -1,10 +1,10 @@
-// relgeo/joining/join_command.h — joining from files to a file and a report:
-// what `relgeo join` runs (SPEC Sec. 8), so that a command is a thin layer
-// (parse options, call run_join, print to_json(report), exit by its status).
-//
-//   relgeo join --surface S.step|S.iges|S.json --mesh A.off [--mesh B.off]
-//               [--curve C.json] --output J.off [--report R.json]
-//               [--method whitney|naive|occt] [--kernel failsafe|interval|filtered|exact]
+// tools/relgeo/commands/join/run_with.h — the kernel-templated body of
+// `relgeo join` (SPEC Sec. 8): read the surface model, the edge curves and the
+// mesh patches, join them by the method named in the options under kernel K,
+// judge the result by the criteria, write the joined mesh. The kernel comes
+// from the tool's kernel list (dispatch.cpp turns `--kernel` into K); include
+// this header only there (it brings the joiner's heavy headers) and in its
+// test, run_with_test.cpp.
 //
 // Needs CGAL, Eigen and relgeo::io (nlohmann-json); STEP/IGES input and the
 // occt method need relgeo::occt (RELGEO_HAS_OCCT); without it they are
@@ -13,7 +13,6 @@
 
 #include <filesystem>
 #include <limits>
-#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,7 +21,6 @@
 #include "relgeo/joining/join_report_json.h"
 #include "relgeo/joining/joiner.h"
 #include "relgeo/joining/naive_sewing.h"
-#include "relgeo/kernel.h"
 #include "relgeo/mesh/mesh_io.h"
 #include "relgeo/surfaces/surface_json.h"
 #ifdef RELGEO_HAS_OCCT
@@ -30,9 +28,10 @@
 #include "relgeo/surfaces/occt_io.h"
 #endif
 
-namespace relgeo {
+namespace relgeo::tool {
 
-/// What run_join reads, how it joins, where it writes.
+/// What run_join_with reads, how it joins, where it writes: the files and
+/// the joiner's parameters of Join_tool_options (dispatch.cpp fills it).
 struct Join_command_options {
   /// The faces: .step/.stp/.iges/.igs (OpenCASCADE) or .json (surface_json.h).
   std::string surface;
@@ -45,8 +44,6 @@ struct Join_command_options {
   /// whitney (thesis Sec. 4.3), naive (Sec. 4.1) or occt (OpenCASCADE's
   /// sewing and meshing of the faces; the meshes are only measured).
   std::string method = "whitney";
-  /// Kernel of the certified checks: failsafe, interval, filtered, exact.
-  std::string kernel = "filtered";
   Join_options join{};
   /// Error criteria: a result with a face whose absolute error or
   /// normal-vector error (after joining) exceeds them is "failed" [none].
@@ -57,12 +54,12 @@ struct Join_command_options {
 #endif
 };
 
-/// run_join's answer: the joining report, and whether the result is valid.
+/// run_join_with's answer: the joining report, and whether the result is valid.
 struct Join_command_report {
   /// "ok": conforming, watertight seams, no flipped, degenerate or
   /// overlapping triangle in any face's (u,v) domain; "failed" otherwise
   /// (naive sewing on a folding input, for instance), or an error above the
-/// criteria of the options: `failure` says why.
+  /// criteria of the options: `failure` says why.
   std::string status = "ok";
   std::string failure;
   std::string surface, output;
@@ -89,8 +86,12 @@ inline Surface_model read_surface_model(const std::string& path) {
 #endif
 }
 
-/// \brief Joining with kernel K (the firewall: a tool can instantiate each
-/// kernel in its own translation unit). See run_join.
+/// \brief Reads the model and the meshes, joins them by the method named in
+/// `o` with kernel K, writes the result (when `o.output` is given), returns
+/// the report.
+/// \throws relgeo::Error: Unreadable_file and the other Invalid_input kinds
+/// for bad input (an unknown method too; exit 2), Joining_failure when a step
+/// fails (exit 1).
 template <class K>
 Join_command_report run_join_with(const Join_command_options& o) {
   Join_command_report r;
@@ -102,12 +103,12 @@ Join_command_report run_join_with(const Join_command_options& o) {
   r.faces = model.faces.size();
   Join_result result;
   if (o.method == "whitney") {
-    result = join_meshes<K>(model, meshes, o.join);
+    result = join_meshes(model, meshes, K{}, o.join);
   } else if (o.method == "naive") {
-    result = naive_sewing<K>(model, meshes, o.join);
+    result = naive_sewing(model, meshes, K{}, o.join);
   } else if (o.method == "occt") {
 #ifdef RELGEO_HAS_OCCT
-    result = occt_sewing<K>(model, meshes, o.occt);
+    result = occt_sewing(model, meshes, K{}, o.occt);
 #else
     throw Invalid_input("method occt needs relgeo built with OpenCASCADE (relgeo::occt)");
 #endif
@@ -135,18 +136,6 @@ Join_command_report run_join_with(const Join_command_options& o) {
   return r;
 }
 
-/// \brief Reads the model and the meshes, joins them with the method and
-/// kernel named in `o`, writes the result, returns the report.
-/// \throws relgeo::Error: Unreadable_file and the other Invalid_input kinds
-/// for bad input (exit 2), Joining_failure when a step fails (exit 1).
-inline Join_command_report run_join(const Join_command_options& o) {
-  if (o.kernel == "failsafe") return run_join_with<Failsafe_kernel<double>>(o);
-  if (o.kernel == "interval") return run_join_with<Interval_kernel>(o);
-  if (o.kernel == "filtered") return run_join_with<Filtered_exact_kernel>(o);
-  if (o.kernel == "exact") return run_join_with<Exact_kernel>(o);
-  throw Invalid_input("unknown kernel '" + o.kernel + "' for joining (failsafe, interval, filtered or exact)");
-}
-
 /// The command's JSON output.
 inline io::Json to_json(const Join_command_report& r) {
   io::Json j = to_json(r.report);
@@ -159,4 +148,4 @@ inline io::Json to_json(const Join_command_report& r) {
   return j;
 }
 
-}  // namespace relgeo
+}  // namespace relgeo::tool

@@ -25,7 +25,7 @@ jobs=${RELGEO_JOBS:-$(nproc)}
 # What each package is for: README.md, section "Dependencies".
 packages=(
   build-essential cmake pkg-config ccache
-  python3             # scripts/unconstrained_kernels.py (a test of `test`)
+  python3             # scripts/api_rules.py (two tests of `test`)
   libgmp-dev libmpfr-dev
   libcgal-dev libboost-dev libeigen3-dev libtbb-dev
   libgtest-dev libbenchmark-dev

@@ -67,7 +67,7 @@ Stream& operator<<(Stream& os, Certified_sign s) {
 // `possibly(s, v)` where it must also happen when the kernel does not know,
 // `is_certain(s)` for the doubt itself. relgeo does not compare a sign with
 // `==` or `!=` outside this header (`s != v` quietly counts `uncertain` as
-// "not v"): scripts/sign_comparisons.py, run by the tests, lists any such
+// "not v"): `scripts/api_rules.py signs`, run by the tests, lists any such
 // comparison and prints none. Where an algorithm needs a definite answer it
 // tests is_certain first and reports the doubt as a failure (the hulls' sort,
 // the Boolean's `undecided` pairs) or throws.

@@ -4,6 +4,8 @@
 #include <CGAL/Simple_cartesian.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "relgeo/kernel.h"
 #include "relgeo/kernel/cgal_kernel.h"
 
@@ -36,6 +38,27 @@ TEST(KernelProperties, NamesAreShortAndDistinct) {
   EXPECT_EQ(Cgal_kernel<CGAL::Epick>::name(), "cgal-epick");
   EXPECT_EQ(Cgal_kernel<CGAL::Epeck>::name(), "cgal-epeck");
   EXPECT_EQ(Cgal_kernel<CGAL::Simple_cartesian<double>>::name(), "cgal-sc-double");
+}
+
+// The concepts each kernel models (kernel/concepts.h): every certified kernel
+// with implicit points is an IntersectionKernel_3, Cgal_kernel<Epeck> included.
+static_assert(IntersectionKernel_3<Filtered_exact_kernel> && IntersectionKernel_3<Exact_kernel>);
+static_assert(IntersectionKernel_3<Cgal_kernel<CGAL::Epeck>>);
+static_assert(ConstructionKernel_3<Interval_kernel> && ConstructionKernel_3<Exact_kernel>);
+static_assert(!Kernel<int> && !KernelOrDefault<int> && KernelOrDefault<void>);
+
+TEST(KernelProperties, CgalKernelsCompareTheirNumbersExactly) {
+  // NumberComparisonKernel_3: the sign of a - b, uncertain only for a NaN.
+  using Epick = Cgal_kernel<CGAL::Epick>;
+  EXPECT_EQ(Epick::compare_ft(1.0, 2.0), Certified_sign::negative);
+  EXPECT_EQ(Epick::compare_ft(0x1p53 + 2, 0x1p53), Certified_sign::positive);
+  EXPECT_EQ(Epick::compare_ft(-0.0, 0.0), Certified_sign::zero);
+  EXPECT_EQ(Epick::compare_ft(std::nan(""), 1.0), Certified_sign::uncertain);
+  // Epeck's lazy numbers: 1/3 + 1/3 + 1/3 is exactly 1, which no double sum is.
+  using Epeck = Cgal_kernel<CGAL::Epeck>;
+  const Epeck::FT third = Epeck::FT(1) / Epeck::FT(3);
+  EXPECT_EQ(Epeck::compare_ft(third + third + third, Epeck::FT(1)), Certified_sign::zero);
+  EXPECT_EQ(Epeck::compare_ft(third, Epeck::FT(0.3333333333333333)), Certified_sign::positive);
 }
 
 TEST(KernelProperties, GuaranteesAreStated) {

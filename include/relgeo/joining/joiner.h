@@ -298,13 +298,7 @@ void measure_face(Face_state& s, const Face_output& out, const std::vector<Joint
 /// Conformity, seams and angles of the whole result.
 inline void measure_mesh(const Triangle_mesh<Point_3<double>>& m, const std::vector<Joint>& joints,
                          const Joint_vertices& joint_vertices, Join_report& report) {
-  report.vertices = m.vertices.size(), report.triangles = m.faces.size();
-  std::vector<Mesh_issue> issues;
-  const Mesh_topology t = Mesh_topology::build_checked(m.vertices.size(), m.faces, issues);
-  for (const Mesh_issue& i : issues) {
-    report.non_manifold_edges += i.defect == Mesh_defect::non_manifold_edge;
-    report.inconsistent_orientations += i.defect == Mesh_defect::inconsistent_orientation;
-  }
+  const Mesh_topology t = measured_topology(m, report);
   // A boundary edge of the result between two joint vertices of one shared
   // edge is a gap in a seam.
   const auto on_edge = [&](Index v, std::size_t j) {

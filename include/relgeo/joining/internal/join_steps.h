@@ -432,5 +432,19 @@ inline void split_triangle(const std::array<std::int64_t, 3>& t, const std::arra
   }
 }
 
+/// The topology of a joined mesh, with its vertex and triangle counts and
+/// its non-manifold edges and inconsistent orientations counted in `report`
+/// (the joiner's and the sewings' measures start here).
+inline Mesh_topology measured_topology(const Triangle_mesh<Point_3<double>>& m, Join_report& report) {
+  report.vertices = m.vertices.size(), report.triangles = m.faces.size();
+  std::vector<Mesh_issue> issues;
+  Mesh_topology t = Mesh_topology::build_checked(m.vertices.size(), m.faces, issues);
+  for (const Mesh_issue& i : issues) {
+    report.non_manifold_edges += i.defect == Mesh_defect::non_manifold_edge;
+    report.inconsistent_orientations += i.defect == Mesh_defect::inconsistent_orientation;
+  }
+  return t;
+}
+
 }  // namespace internal::join
 }  // namespace relgeo

@@ -49,13 +49,7 @@ void measure_sewn_face(Face_state& s, const std::vector<Triangle>& triangles, co
 /// verdicts (after every face was measured).
 template <class On_seam>
 void measure_sewn_mesh(const Triangle_mesh<Point_3<double>>& m, On_seam&& on_seam, Join_report& report) {
-  report.vertices = m.vertices.size(), report.triangles = m.faces.size();
-  std::vector<Mesh_issue> issues;
-  const Mesh_topology topo = Mesh_topology::build_checked(m.vertices.size(), m.faces, issues);
-  for (const Mesh_issue& i : issues) {
-    report.non_manifold_edges += i.defect == Mesh_defect::non_manifold_edge;
-    report.inconsistent_orientations += i.defect == Mesh_defect::inconsistent_orientation;
-  }
+  const Mesh_topology topo = measured_topology(m, report);
   for (Index e = 0; e < topo.number_of_edges(); ++e)
     if (topo.is_boundary_edge(e)) {
       ++report.boundary_edges;

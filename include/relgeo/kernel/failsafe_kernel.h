@@ -43,28 +43,20 @@ template <class T>
   requires std::is_floating_point_v<T>
 class Failsafe_kernel
     : public internal::Kernel_base<Failsafe_kernel<T>, T>,
+      public internal::Floating_point_kernel_constants<T>,
       public internal::Implicit_kernel_base<internal::Enclosed_implicit_policy<Point_3<T>, internal::Filtered_value<T>>> {
   using Base = internal::Kernel_base<Failsafe_kernel<T>, T>;
-  using C = internal::Orientation_filter_constants<T>;
 
  public:
   using typename Base::FT;
   using typename Base::Point_2;
   using typename Base::Point_3;
 
-  static std::string name() {
-    if constexpr (std::is_same_v<T, float>) return "failsafe<float>";
-    else if constexpr (std::is_same_v<T, double>) return "failsafe<double>";
-    else return "failsafe<long-double>";
-  }
-  static constexpr double unit_roundoff = static_cast<double>(unit_roundoff_v<T>);
+  static std::string name() { return "failsafe<" + Number_traits<T>::name() + ">"; }
   static constexpr bool is_certified = true;
-  static constexpr bool has_exact_predicates = false;
-  static constexpr bool has_exact_constructions = false;
-  /// The epsilon of the test: a definite answer is given only when
-  /// |det| > eps * Mx * My (* Mz).
-  static constexpr std::optional<double> orientation_2_error_bound = round_up_to_double(C::eps_2);
-  static constexpr std::optional<double> orientation_3_error_bound = round_up_to_double(C::eps_3);
+  // unit_roundoff and the orientation error bounds, which are the epsilons of
+  // the test (a definite answer only when |det| > eps * Mx * My (* Mz)), come
+  // from Floating_point_kernel_constants.
 
   /// v rounded to T. A value in T's subnormal range is not flushed to zero
   /// even under flush-to-zero (converted again in the default environment).

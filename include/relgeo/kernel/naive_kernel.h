@@ -28,28 +28,20 @@ namespace relgeo {
 template <class T>
   requires std::is_floating_point_v<T>
 class Naive_kernel : public internal::Kernel_base<Naive_kernel<T>, T>,
+                     public internal::Floating_point_kernel_constants<T>,
                      public internal::Implicit_kernel_base<internal::Rounded_implicit_policy<Naive_kernel<T>, T>> {
   using Base = internal::Kernel_base<Naive_kernel<T>, T>;
-  using C = internal::Orientation_filter_constants<T>;
 
  public:
   using typename Base::FT;
   using typename Base::Point_2;
   using typename Base::Point_3;
 
-  static std::string name() {
-    if constexpr (std::is_same_v<T, float>) return "float";
-    else if constexpr (std::is_same_v<T, double>) return "double";
-    else return "long-double";
-  }
-  static constexpr double unit_roundoff = static_cast<double>(unit_roundoff_v<T>);
+  static std::string name() { return Number_traits<T>::name(); }
   static constexpr bool is_certified = false;
-  static constexpr bool has_exact_predicates = false;
-  static constexpr bool has_exact_constructions = false;
-  /// Forward-error constants: |computed - exact| <= eps * Mx * My (* Mz),
-  /// where the kernel *could* be wrong (see semi_static_filter.h).
-  static constexpr std::optional<double> orientation_2_error_bound = round_up_to_double(C::eps_2);
-  static constexpr std::optional<double> orientation_3_error_bound = round_up_to_double(C::eps_3);
+  // unit_roundoff and the orientation error bounds (|computed - exact| <=
+  // eps * Mx * My (* Mz): where this kernel *could* be wrong) come from
+  // Floating_point_kernel_constants.
 
   static FT from_double(double v) { return static_cast<FT>(v); }
   static Certified_sign compare_ft(const FT& a, const FT& b) {

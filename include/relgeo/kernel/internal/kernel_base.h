@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <span>
 
@@ -185,6 +186,22 @@ class Kernel_base {
   Construct_barycenter_3 construct_barycenter_3_object() const { return {}; }
   Compute_squared_distance_2 compute_squared_distance_2_object() const { return {}; }
   Compute_squared_distance_3 compute_squared_distance_3_object() const { return {}; }
+};
+
+/// What a kernel computing its predicates in the floating-point type T states
+/// about itself: T's unit roundoff, no exact predicates or constructions, and
+/// the forward-error constants of the orientation determinants in T (see
+/// semi_static_filter.h: the naive kernel may be wrong within them, the
+/// fail-safe kernel answers `uncertain` within them).
+template <class T>
+struct Floating_point_kernel_constants {
+  static constexpr double unit_roundoff = static_cast<double>(unit_roundoff_v<T>);
+  static constexpr bool has_exact_predicates = false;
+  static constexpr bool has_exact_constructions = false;
+  static constexpr std::optional<double> orientation_2_error_bound =
+      round_up_to_double(Orientation_filter_constants<T>::eps_2);
+  static constexpr std::optional<double> orientation_3_error_bound =
+      round_up_to_double(Orientation_filter_constants<T>::eps_3);
 };
 
 }  // namespace relgeo::internal

@@ -102,8 +102,11 @@ relgeo_tool_test(experiment_quick_joining 0
 # files to files under the kernels directly: GoogleTest, relgeo_add_test of
 # test/CMakeLists.txt (include folder: this one).
 find_package(GTest REQUIRED)
-set(_join_test_libs relgeo::cgal relgeo::eigen relgeo::io relgeo_fixtures)
+set(_join_test_libs relgeo::cgal relgeo::eigen relgeo::io relgeo_joining_fixtures)
 if(TARGET relgeo::occt)
   list(APPEND _join_test_libs relgeo::occt)
+endif()
+if(TARGET relgeo::compiled)
+  list(APPEND _join_test_libs relgeo::compiled)  # the joiner's kernels compiled once
 endif()
 relgeo_add_test(relgeo_tool_join_tests SOURCES commands/join/run_with_test.cpp LIBS ${_join_test_libs})

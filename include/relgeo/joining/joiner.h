@@ -46,6 +46,7 @@
 
 #include "relgeo/core/errors.h"
 #include "relgeo/core/floating_point.h"
+#include "relgeo/joining/compiled_kernels.h"
 #include "relgeo/joining/domain_mesher.h"
 #include "relgeo/joining/internal/join_steps.h"
 #include "relgeo/kernel/concepts.h"
@@ -344,26 +345,12 @@ Join_result join_meshes(const Surface_model& model, const std::vector<Triangle_m
                         const K& k = K{}, const Join_options& options = {}) {
   using namespace internal::join;
   const internal::Stopwatch start;
-  Join_result result;
+  Join_result result = started_join_result("join_meshes", "whitney", K::name(), model, meshes.size());
   Join_report& report = result.report;
-  report.method = "whitney", report.kernel = K::name();
-  if (model.faces.empty()) throw Joining_input_error("join_meshes: the model has no face");
-  if (meshes.size() != model.faces.size())
-    throw Joining_input_error("join_meshes: " + std::to_string(meshes.size()) + " meshes for " +
-                              std::to_string(model.faces.size()) + " faces");
-  const auto step = [&](const char* name, auto&& f) {
-    const internal::Stopwatch t;
-    f();
-    report.seconds.push_back({name, t.elapsed()});
-  };
+  const auto step = [&](const char* name, auto&& f) { timed_step(report, name, f); };
 
-  std::vector<Face_state> faces(model.faces.size());
-  step("projection", [&] {
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      faces[f].face = &model.faces[f];
-      prepare_face(faces[f], meshes[f], f, options, k);
-    }
-  });
+  std::vector<Face_state> faces;
+  step("projection", [&] { faces = prepare_faces(model, meshes, options, k); });
 
   std::vector<Joint> joints;
   std::map<int, Point_3<double>> vertex_points;
@@ -424,5 +411,13 @@ Join_result join_meshes(const Surface_model& model, const std::vector<Triangle_m
   report.total_seconds = start.elapsed();
   return result;
 }
+
+#if defined(RELGEO_COMPILED_JOINING) && RELGEO_COMPILED_JOINING
+#define RELGEO_JOIN_MESHES_INSTANCE(K)                                                                          \
+  extern template Join_result join_meshes<K>(const Surface_model&, const std::vector<Triangle_mesh<Point_3<double>>>&, \
+                                             const K&, const Join_options&);
+RELGEO_JOINING_COMPILED_KERNELS(RELGEO_JOIN_MESHES_INSTANCE)
+#undef RELGEO_JOIN_MESHES_INSTANCE
+#endif
 
 }  // namespace relgeo

@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "relgeo/joining/compiled_kernels.h"
 #include "relgeo/joining/internal/join_steps.h"
 #include "relgeo/joining/internal/sewn_measures.h"
 #include "relgeo/kernel/concepts.h"
@@ -201,20 +202,11 @@ Join_result naive_sewing(const Surface_model& model, const std::vector<Triangle_
                          const K& k = K{}, const Join_options& options = {}) {
   using namespace internal::join;
   const internal::Stopwatch start;
-  Join_result result = sewing_result("naive_sewing", "naive-midpoint", K::name(), model, meshes.size());
+  Join_result result = started_join_result("naive_sewing", "naive-midpoint", K::name(), model, meshes.size());
   Join_report& report = result.report;
-  const auto step = [&](const char* name, auto&& f) {
-    const internal::Stopwatch t;
-    f();
-    report.seconds.push_back({name, t.elapsed()});
-  };
-  std::vector<Face_state> faces(model.faces.size());
-  step("projection", [&] {
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      faces[f].face = &model.faces[f];
-      prepare_face(faces[f], meshes[f], f, options, k);
-    }
-  });
+  const auto step = [&](const char* name, auto&& f) { timed_step(report, name, f); };
+  std::vector<Face_state> faces;
+  step("projection", [&] { faces = prepare_faces(model, meshes, options, k); });
   std::vector<Sewing_edit> edits;
   step("sewing", [&] {
     std::vector<Joint> joints = make_joints(model, faces);
@@ -228,5 +220,13 @@ Join_result naive_sewing(const Surface_model& model, const std::vector<Triangle_
   report.total_seconds = start.elapsed();
   return result;
 }
+
+#if defined(RELGEO_COMPILED_JOINING) && RELGEO_COMPILED_JOINING
+#define RELGEO_NAIVE_SEWING_INSTANCE(K)                                                                         \
+  extern template Join_result naive_sewing<K>(const Surface_model&, const std::vector<Triangle_mesh<Point_3<double>>>&, \
+                                              const K&, const Join_options&);
+RELGEO_JOINING_COMPILED_KERNELS(RELGEO_NAIVE_SEWING_INSTANCE)
+#undef RELGEO_NAIVE_SEWING_INSTANCE
+#endif
 
 }  // namespace relgeo

@@ -37,13 +37,9 @@ Join_result occt_sewing(const Surface_model& model, const std::vector<Triangle_m
                         const K& k = K{}, const Occt_sewing_options& options = {}) {
   using namespace internal::join;
   const internal::Stopwatch start;
-  Join_result result = sewing_result("occt_sewing", "occt-sewing", K::name(), model, meshes.size());
+  Join_result result = started_join_result("occt_sewing", "occt-sewing", K::name(), model, meshes.size());
   Join_report& report = result.report;
-  std::vector<Face_state> faces(model.faces.size());
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    faces[f].face = &model.faces[f];
-    prepare_face(faces[f], meshes[f], f, Join_options{}, k);
-  }
+  std::vector<Face_state> faces = prepare_faces(model, meshes, Join_options{}, k);
   const double scale = meshes_diagonal(meshes);
   std::vector<Handle(Geom_Surface)> surfaces;
   const TopoDS_Shape sewn = sew_and_tessellate(model, options.sewing_tolerance * scale, options.linear_deflection * scale,

@@ -162,6 +162,40 @@ void prepare_face(Face_state& s, const Triangle_mesh<Point_3<double>>& mesh, std
   s.median_edge_uv = lengths[lengths.size() / 2];
 }
 
+/// Step 1 for every face of the model, in order.
+template <class K>
+std::vector<Face_state> prepare_faces(const Surface_model& model, const std::vector<Triangle_mesh<Point_3<double>>>& meshes,
+                                      const Join_options& o, const K& k) {
+  std::vector<Face_state> faces(model.faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    faces[f].face = &model.faces[f];
+    prepare_face(faces[f], meshes[f], f, o, k);
+  }
+  return faces;
+}
+
+/// An empty result of `method` (by the function `who`) under the kernel named
+/// `kernel`. \throws Joining_input_error unless the model has faces and there
+/// is one mesh per face.
+inline Join_result started_join_result(const char* who, const char* method, std::string kernel,
+                                       const Surface_model& model, std::size_t number_of_meshes) {
+  Join_result result;
+  result.report.method = method, result.report.kernel = std::move(kernel);
+  if (model.faces.empty()) throw Joining_input_error(std::string(who) + ": the model has no face");
+  if (number_of_meshes != model.faces.size())
+    throw Joining_input_error(std::string(who) + ": " + std::to_string(number_of_meshes) + " meshes for " +
+                              std::to_string(model.faces.size()) + " faces");
+  return result;
+}
+
+/// Runs f() and appends its wall time to the report under `name`.
+template <class F>
+void timed_step(Join_report& report, const char* name, F&& f) {
+  const Stopwatch t;
+  f();
+  report.seconds.push_back({name, t.elapsed()});
+}
+
 // ---- step 2: joints ----------------------------------------------------------
 /// Joints for the model's edges and for trim curves without one; fills
 /// curve_edge of every face.

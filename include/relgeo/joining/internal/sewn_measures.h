@@ -1,7 +1,6 @@
 // relgeo/joining/internal/sewn_measures.h — what the two sewing peers of the
-// joiner (naive_sewing.h, occt_sewing.h) share: the checked start of a
-// result, a sewn face measured in (u,v) like the joiner's faces, and the
-// topology and seams of the whole sewn mesh.
+// joiner (naive_sewing.h, occt_sewing.h) share: a sewn face measured in (u,v)
+// like the joiner's faces, and the topology and seams of the whole sewn mesh.
 #pragma once
 
 #include <algorithm>
@@ -12,19 +11,6 @@
 #include "relgeo/joining/internal/join_steps.h"
 
 namespace relgeo::internal::join {
-
-/// An empty result of `method` under the kernel named `kernel`.
-/// \throws Joining_input_error (naming `who`) unless there is one mesh per
-/// face of the model.
-inline Join_result sewing_result(const char* who, const char* method, std::string kernel, const Surface_model& model,
-                                 std::size_t number_of_meshes) {
-  Join_result result;
-  result.report.method = method, result.report.kernel = std::move(kernel);
-  if (model.faces.empty() || number_of_meshes != model.faces.size())
-    throw Joining_input_error(std::string(who) + ": " + std::to_string(number_of_meshes) + " meshes for " +
-                              std::to_string(model.faces.size()) + " faces");
-  return result;
-}
 
 /// One sewn face, its `triangles` over the (u,v) and heights `h`: errors
 /// after, certified orientation and overlaps; appended to the report.

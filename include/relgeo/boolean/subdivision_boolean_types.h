@@ -178,16 +178,14 @@ struct Subdivision_boolean_counts {
   std::size_t fitted_vertices = 0;
 };
 
-/// The result of relgeo::subdivision_boolean under kernel K.
-template <IntersectionKernel_3 K>
-struct Subdivision_boolean_result {
+/// The kernel-free part of relgeo::subdivision_boolean's result: all of it
+/// but the polyhedral Boolean, whose vertices are K's points.
+struct Subdivision_boolean_output {
   enum class Status : std::uint8_t { ok, failed };
   Status status = Status::ok;
   /// Why it failed (empty when ok).
   std::string failure;
   unsigned level = 0;
-  /// The Boolean of the two limit meshes at `level` (the polyhedral result).
-  Boolean_result<K> polyhedral;
   /// The subdivision result: a Loop control mesh, the intersection curves and
   /// the operands' own creases tagged (fitted when options.fit and better).
   Triangle_mesh<Point_3<double>> control;
@@ -204,6 +202,13 @@ struct Subdivision_boolean_result {
   Subdivision_boolean_timing time;
 
   bool ok() const { return status == Status::ok; }
+};
+
+/// The result of relgeo::subdivision_boolean under kernel K.
+template <IntersectionKernel_3 K>
+struct Subdivision_boolean_result : Subdivision_boolean_output {
+  /// The Boolean of the two limit meshes at `level` (the polyhedral result).
+  Boolean_result<K> polyhedral;
 };
 
 }  // namespace relgeo

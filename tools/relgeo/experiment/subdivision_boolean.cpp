@@ -113,8 +113,8 @@ Json level_json(const Solid_pair_case& c, unsigned level, const std::string& ker
                  {"curve_edges", run.counts.curve_edges},
                  {"bad_faces", {run.counts.bad_faces[0], run.counts.bad_faces[1]}},
                  {"fitted_vertices", run.counts.fitted_vertices}};
-  j["distance"] = {{"subdivision_to_polyhedral", surface_distance_json(run.distance)},
-                   {"subdivision_to_polyhedral_fitted", surface_distance_json(run.distance_fitted)}};
+  j["distance"] = {{"subdivision_to_polyhedral", surface_distance_json(run.distance_to_polyhedral)},
+                   {"subdivision_to_polyhedral_fitted", surface_distance_json(run.distance_to_polyhedral_fitted)}};
   j["fitted"] = run.fitted;
   j["ratio_to_previous_level"] = io::json_measure(ratio);
   j["validation"] = run.ok() ? subdivision_validation_json(run.validation) : Json(nullptr);
@@ -176,8 +176,8 @@ class Subdivision_boolean_experiment {
     } catch (const std::exception& e) {
       status = std::string("refused: ") + e.what();
     }
-    const double d = run.ok() && run.distance.measured() ? run.distance.hausdorff() : std::nan("");
-    const double df = run.ok() && run.distance_fitted.measured() ? run.distance_fitted.hausdorff() : std::nan("");
+    const double d = run.ok() && run.distance_to_polyhedral.measured() ? run.distance_to_polyhedral.hausdorff() : std::nan("");
+    const double df = run.ok() && run.distance_to_polyhedral_fitted.measured() ? run.distance_to_polyhedral_fitted.hausdorff() : std::nan("");
     const double ratio = previous / d;
     if (run.certified && run.ok()) check_certified(c, kernel, level, run, d, df, ratio);
     table_.add_row({c.name, std::to_string(level), kernel, status.substr(0, 40),

@@ -22,20 +22,9 @@ Subdivision_boolean_run evaluate_subdivision_boolean(const std::string& kernel, 
     using K = decltype(k);
     const Subdivision_boolean_result<K> r = relgeo::subdivision_boolean(a, b, op, levels, k, options);
     Subdivision_boolean_run run;
+    static_cast<Subdivision_boolean_output&>(run) = r;
     set_kernel_fields<K>(run, entry.label());
-    run.succeeded = r.ok();
-    run.failure = r.failure;
-    run.level = r.level;
     run.polyhedral = boolean_run_of(r.polyhedral, entry.label());
-    run.control = r.control;
-    run.unfitted = r.unfitted;
-    run.fitted = r.fitted;
-    run.curve_vertices = r.curve_vertices;
-    run.distance = r.distance_to_polyhedral;
-    run.distance_fitted = r.distance_to_polyhedral_fitted;
-    run.validation = r.validation;
-    run.counts = r.counts;
-    run.time = r.time;
     return run;
   });
 }

@@ -13,28 +13,18 @@
 
 namespace relgeo::tool {
 
-/// One Boolean of two Loop subdivision solids under one kernel (the fields of
-/// Subdivision_boolean_result<K>, the polyhedral result as a Boolean_run).
-struct Subdivision_boolean_run {
+/// One Boolean of two Loop subdivision solids under one kernel: the
+/// library's kernel-free output, the kernel's fields and the polyhedral
+/// result as a Boolean_run. A run that has not succeeded (the default: one
+/// that was refused) is `failed`.
+struct Subdivision_boolean_run : Subdivision_boolean_output {
+  Subdivision_boolean_run() { status = Status::failed; }
+
   std::string kernel, kernel_model;
   bool certified = false, exact = false;
-  bool succeeded = false;
-  std::string failure;
-  unsigned level = 0;
   /// The Boolean of the two limit meshes at `level` (its
   /// exact_self_intersecting_pairs is not computed here).
   Boolean_run polyhedral = not_run();
-  /// The subdivision result (crease tags: the curves and the operands'
-  /// creases) and the same before fitting.
-  Mesh_double control, unfitted;
-  bool fitted = false;
-  std::vector<Index> curve_vertices;
-  Surface_distance distance, distance_fitted;
-  Subdivision_validation validation;
-  Subdivision_boolean_counts counts;
-  Subdivision_boolean_timing time;
-
-  bool ok() const { return succeeded; }
 
  private:
   // A run that did not reach the polyhedral Boolean has none.

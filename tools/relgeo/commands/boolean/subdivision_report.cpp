@@ -63,8 +63,8 @@ io::Json subdivision_boolean_report_json(const Subdivision_boolean_report_input&
                  {"curve_edges", r.counts.curve_edges},
                  {"bad_faces", {r.counts.bad_faces[0], r.counts.bad_faces[1]}},
                  {"fitted_vertices", r.counts.fitted_vertices}};
-  j["distance"] = {{"subdivision_to_polyhedral", surface_distance_json(r.distance)},
-                   {"subdivision_to_polyhedral_fitted", surface_distance_json(r.distance_fitted)}};
+  j["distance"] = {{"subdivision_to_polyhedral", surface_distance_json(r.distance_to_polyhedral)},
+                   {"subdivision_to_polyhedral_fitted", surface_distance_json(r.distance_to_polyhedral_fitted)}};
   j["validation"] = r.ok() ? subdivision_validation_json(r.validation) : io::Json(nullptr);
   io::Json polyhedral = boolean_report_json({in.operation, in.input_a, in.input_b, in.a, in.b, &r.polyhedral, nullptr});
   for (const char* key : {"operation", "kernel", "kernel_model", "certified", "operands", "exact_self_intersecting_pairs"})
@@ -92,9 +92,9 @@ std::string subdivision_boolean_report_text(const Subdivision_boolean_report_inp
   s.add("curves", std::to_string(r.counts.curve_vertices) + " vertices, " + std::to_string(r.counts.curve_edges) +
                       " edges; control faces crossed badly: " + std::to_string(r.counts.bad_faces[0]) + " of A, " +
                       std::to_string(r.counts.bad_faces[1]) + " of B");
-  s.add("distance", distance_text(r.distance));
-  if (r.distance_fitted.measured() || r.counts.fitted_vertices)
-    s.add("distance fitted", distance_text(r.distance_fitted) + "; " + std::to_string(r.counts.fitted_vertices) +
+  s.add("distance", distance_text(r.distance_to_polyhedral));
+  if (r.distance_to_polyhedral_fitted.measured() || r.counts.fitted_vertices)
+    s.add("distance fitted", distance_text(r.distance_to_polyhedral_fitted) + "; " + std::to_string(r.counts.fitted_vertices) +
                                  " control vertices moved, " + (r.fitted ? "fitted mesh kept" : "not closer: unfitted mesh kept"));
   if (r.ok()) {
     const Subdivision_validation& v = r.validation;

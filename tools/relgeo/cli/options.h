@@ -38,7 +38,8 @@ struct Registered_command {
   Command_runner run;
 };
 
-/// Adds the subcommand `name` (one-line summary, help footer), lets
+/// Adds the subcommand `name` (one-line summary, help footer; a footer that
+/// does not explain its own exit codes gets the common paragraph), lets
 /// `declare` put its options on it, bound to an Options object that lives as
 /// long as the runner, and returns the runner calling `run(options, streams)`.
 template <class Options>
@@ -46,7 +47,8 @@ Registered_command add_command(CLI::App& app, const std::string& name, const std
                                const std::string& footer, void (*declare)(CLI::App&, Options&),
                                int (*run)(const Options&, Streams)) {
   CLI::App* cmd = app.add_subcommand(name, summary);
-  cmd->footer(footer);
+  const bool own_exit_codes = footer.find("Exit codes:") != std::string::npos;
+  cmd->footer(own_exit_codes ? footer : footer + (footer.ends_with('\n') ? "" : "\n") + exit_codes_text);
   auto options = std::make_shared<Options>();
   declare(*cmd, *options);
   return {cmd, [options, run](Streams io) { return run(*options, io); }};

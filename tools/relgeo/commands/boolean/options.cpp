@@ -54,8 +54,7 @@ std::string boolean_help_footer() {
          "where, note}, candidate_pairs, separated_pairs, adjacent_pairs, certified_adjacent_pairs, certified_regions, undecided_pairs), "
          "polyhedral {status, "
          "failure, undecided_pairs, output, validation (as above), counts, time_s}, time_s {limit_meshes, "
-         "boolean, mapping, fitting, distance, validation, layer, total}.\n" +
-         std::string(exit_codes_text);
+         "boolean, mapping, fitting, distance, validation, layer, total}.\n";
 }
 
 Output_rounding parse_output_rounding(const std::string& name) {

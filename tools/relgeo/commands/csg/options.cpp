@@ -23,8 +23,7 @@ std::string csg_help_footer() {
          "JSON fields: tree, kernel, status, failure, steps [{node, operation, ok, failure, faces, volume, "
          "validation, rounding {method, rounds, defects_before, moved_vertices, flips, collapses, "
          "largest_change, remaining_pairs, remaining_degenerate_faces}, seconds}], output {vertices, faces, volume}, seconds (the Booleans; reading the files "
-         "not included), total_seconds (files read and written included).\n" +
-         std::string(exit_codes_text);
+         "not included), total_seconds (files read and written included).\n";
 }
 
 void declare_csg_options(CLI::App& cmd, Csg_command_options& o) {

@@ -20,8 +20,7 @@ std::string experiment_help_footer() {
          "--quick); status, hull size, convexity, error E, backward error, a-priori bound, "
          "time; inputs as point files in DIR/hull/inputs/, SVG pictures "
          "DIR/hull/<input>_<algorithm>_<kernel>.svg for the 9-point inputs.\n"
-         "Progress lines go to stderr.\n" +
-         std::string(exit_codes_text);
+         "Progress lines go to stderr.\n";
 }
 
 void declare_experiment_options(CLI::App& cmd, Experiment_options& o) {

@@ -29,8 +29,7 @@ std::string hull_help_footer() {
          "the hull), worst_point, uncertain_answers, predicate_calls (null for cgal), time_s "
          "(algorithm only), input, [discard_interior], [svg].\n"
          "SVG: computed hull blue, exact hull dashed green, lost points red circles, computed "
-         "vertices that are not exact-hull vertices orange squares; y up.\n" +
-         std::string(exit_codes_text);
+         "vertices that are not exact-hull vertices orange squares; y up.\n";
 }
 
 void declare_hull_options(CLI::App& cmd, Hull_command_options& o) {

@@ -24,8 +24,7 @@ std::string orient_grid_help_footer() {
          "correct, status, failure, [png].\n"
          "JSON fields (several kernels): [triple], p, q, r, size, cells, kernels [{kernel, kernel_model, certified, "
          "cells, wrong, plus_to_zero, minus_to_zero, zero_to_sign, inversions, uncertain, correct, status, [png]}], "
-         "status, failure.\n" +
-         std::string(exit_codes_text);
+         "status, failure.\n";
 }
 
 void declare_orient_grid_options(CLI::App& cmd, Orient_grid_options& o) {

@@ -45,6 +45,12 @@ class Command_line {
     owned_.push_back(std::string(flag) + "=" + value);
     args_.insert(args_.begin() + 1, owned_.back().data());
   }
+  /// The suite's measuring defaults (--benchmark_min_time in seconds, and
+  /// --benchmark_repetitions when given), unless the caller set them.
+  void set_measuring_defaults(const char* min_time, const char* repetitions = nullptr) {
+    set_default("--benchmark_min_time", min_time);
+    if (repetitions) set_default("--benchmark_repetitions", repetitions);
+  }
   /// benchmark::Initialize on the list; false (after Google Benchmark's
   /// message) when an argument is not recognised.
   bool initialize() {

@@ -105,8 +105,7 @@ void add(const std::string& name, std::vector<long> sizes, bool prune = true) {
 
 int main(int argc, char** argv) {
   relgeo_bench::Command_line args(argc, argv);
-  args.set_default("--benchmark_min_time", "0.2");
-  args.set_default("--benchmark_repetitions", "1");
+  args.set_measuring_defaults("0.2", "1");
   if (!args.initialize()) return 1;
   const std::vector<long> all = {100, 1000, 10000, 100000};
   add<Failsafe_kernel<double>, Graham_fortune_hull>("failsafe<double>/graham-fortune", all);

@@ -542,8 +542,7 @@ int main(int argc, char** argv) {
     memory = v == "true";
     args.erase("--relgeo_memory");
   }
-  args.set_default("--benchmark_repetitions", "1");
-  args.set_default("--benchmark_min_time", "0.3");
+  args.set_measuring_defaults("0.3", "1");
   const std::string format = args.value("--benchmark_format");
   if (!args.initialize()) return 1;
 

@@ -154,8 +154,7 @@ int main(int argc, char** argv) {
   relgeo_bench::Command_line args(argc, argv);
   const std::string csv = args.value("--relgeo_csv");
   args.erase("--relgeo_csv");
-  args.set_default("--benchmark_min_time", "0.05");
-  args.set_default("--benchmark_repetitions", "1");
+  args.set_measuring_defaults("0.05", "1");
   if (!args.initialize()) return 1;
   add("whitney", Method::whitney, "mesh", {0, 1, 2, 3, 4});
   add("naive", Method::naive, "mesh", {0, 1, 2, 3, 4});

@@ -121,8 +121,7 @@ void add(const char* method, const char* data, std::vector<std::pair<long, long>
 
 int main(int argc, char** argv) {
   relgeo_bench::Command_line args(argc, argv);
-  args.set_default("--benchmark_min_time", "0.1");
-  args.set_default("--benchmark_repetitions", "1");
+  args.set_measuring_defaults("0.1", "1");
   if (!args.initialize()) return 1;
   std::vector<std::pair<long, long>> grid;
   for (long sigma : {80, 1000, 10000})

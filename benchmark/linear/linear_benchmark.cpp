@@ -138,8 +138,7 @@ void print_ratios() {
 
 int main(int argc, char** argv) {
   relgeo_bench::Command_line args(argc, argv);
-  args.set_default("--benchmark_min_time", "0.2");
-  args.set_default("--benchmark_repetitions", "1");
+  args.set_measuring_defaults("0.2", "1");
   if (!args.initialize()) return 1;
   for (Linear_solver m : all_linear_solvers) {
     auto* b = benchmark::RegisterBenchmark(("solve/" + std::string(to_string(m))).c_str(),

@@ -205,7 +205,7 @@ class Throughput_reporter : public relgeo_bench::Collecting_reporter {
 
 int main(int argc, char** argv) {
   relgeo_bench::Command_line args(argc, argv);
-  args.set_default("--benchmark_min_time", "0.3");
+  args.set_measuring_defaults("0.3");
   if (!args.initialize()) return 1;
   register_all();
   Throughput_reporter reporter;

@@ -146,7 +146,7 @@ class Table_reporter : public relgeo_bench::Collecting_reporter {
 int main(int argc, char** argv) {
   using namespace relgeo_bench;
   relgeo_bench::Command_line args(argc, argv);
-  args.set_default("--benchmark_min_time", "0.3");
+  args.set_measuring_defaults("0.3");
   if (!args.initialize()) return 1;
 
   const std::vector<Bench_mesh> ms = meshes();

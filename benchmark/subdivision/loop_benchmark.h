@@ -4,6 +4,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,34 @@ struct Bench_mesh {
 /// Registers `loop/<mesh>/L<level>/<subject>` benchmarks for the peers of one
 /// translation unit (CGAL in loop_benchmark_cgal.cpp, OpenMesh in
 /// loop_benchmark_openmesh.cpp). Each sets the counter faces_out.
+/// The benchmarks of one peer: for each mesh, `build(mesh)` makes the peer's
+/// mesh once; each iteration copies it (untimed), runs `subdivide(copy,
+/// level)`, which returns the faces out, and frees the copy (untimed).
+template <class Build, class Subdivide>
+void register_peer(const std::vector<Bench_mesh>& meshes, const std::string& peer, Build build, Subdivide subdivide) {
+  for (const Bench_mesh& bm : meshes) {
+    using Peer_mesh = decltype(build(bm.mesh));
+    auto original = std::make_shared<const Peer_mesh>(build(bm.mesh));
+    for (int level : bm.levels)
+      benchmark::RegisterBenchmark(("loop/" + bm.name + "/L" + std::to_string(level) + "/" + peer).c_str(),
+                                   [original, level, subdivide](benchmark::State& state) {
+                                     std::size_t faces = 0;
+                                     for (auto _ : state) {
+                                       state.PauseTiming();
+                                       auto copy = std::make_unique<Peer_mesh>(*original);
+                                       state.ResumeTiming();
+                                       faces = subdivide(*copy, level);
+                                       state.PauseTiming();
+                                       copy.reset();
+                                       state.ResumeTiming();
+                                     }
+                                     state.counters["faces_out"] = double(faces);
+                                   })
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+  }
+}
+
 void register_cgal(const std::vector<Bench_mesh>& meshes);
 void register_openmesh(const std::vector<Bench_mesh>& meshes);  // no-op without OpenMesh
 bool have_openmesh();

@@ -10,32 +10,17 @@ namespace relgeo_bench {
 
 void register_cgal(const std::vector<Bench_mesh>& meshes) {
   using SM = CGAL::Surface_mesh<CGAL::Epick::Point_3>;
-  for (const Bench_mesh& bm : meshes) {
-    auto sm = std::make_shared<SM>();
-    for (const auto& p : bm.mesh.vertices) sm->add_vertex(CGAL::Epick::Point_3(p.x, p.y, p.z));
-    for (const auto& f : bm.mesh.faces)
-      sm->add_face(SM::Vertex_index(f[0]), SM::Vertex_index(f[1]), SM::Vertex_index(f[2]));
-    for (int level : bm.levels)
-      benchmark::RegisterBenchmark(("loop/" + bm.name + "/L" + std::to_string(level) + "/CGAL").c_str(),
-                                   [sm, level](benchmark::State& state) {
-                                     std::size_t faces = 0;
-                                     for (auto _ : state) {
-                                       state.PauseTiming();
-                                       auto copy = std::make_unique<SM>(*sm);
-                                       state.ResumeTiming();
-                                       CGAL::Subdivision_method_3::Loop_subdivision(
-                                           *copy, CGAL::parameters::number_of_iterations(level));
-                                       faces = copy->number_of_faces();
-                                       benchmark::DoNotOptimize(copy->points().begin());
-                                       state.PauseTiming();
-                                       copy.reset();
-                                       state.ResumeTiming();
-                                     }
-                                     state.counters["faces_out"] = double(faces);
-                                   })
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
-  }
+  const auto build = [](const Mesh_d& m) {
+    SM sm;
+    for (const auto& p : m.vertices) sm.add_vertex(CGAL::Epick::Point_3(p.x, p.y, p.z));
+    for (const auto& f : m.faces) sm.add_face(SM::Vertex_index(f[0]), SM::Vertex_index(f[1]), SM::Vertex_index(f[2]));
+    return sm;
+  };
+  register_peer(meshes, "CGAL", build, [](SM& sm, int level) {
+    CGAL::Subdivision_method_3::Loop_subdivision(sm, CGAL::parameters::number_of_iterations(level));
+    benchmark::DoNotOptimize(sm.points().begin());
+    return std::size_t(sm.number_of_faces());
+  });
 }
 
 }  // namespace relgeo_bench

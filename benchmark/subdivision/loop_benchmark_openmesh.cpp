@@ -20,33 +20,19 @@ using Om = OpenMesh::TriMesh_ArrayKernelT<Traits>;
 bool have_openmesh() { return true; }
 
 void register_openmesh(const std::vector<Bench_mesh>& meshes) {
-  for (const Bench_mesh& bm : meshes) {
-    auto om = std::make_shared<Om>();
-    for (const auto& p : bm.mesh.vertices) om->add_vertex(Om::Point(p.x, p.y, p.z));
-    for (const auto& f : bm.mesh.faces)
-      om->add_face(om->vertex_handle(f[0]), om->vertex_handle(f[1]), om->vertex_handle(f[2]));
-    for (int level : bm.levels)
-      benchmark::RegisterBenchmark(("loop/" + bm.name + "/L" + std::to_string(level) + "/OpenMesh").c_str(),
-                                   [om, level](benchmark::State& state) {
-                                     std::size_t faces = 0;
-                                     OpenMesh::Subdivider::Uniform::LoopT<Om, double> loop;
-                                     for (auto _ : state) {
-                                       state.PauseTiming();
-                                       auto copy = std::make_unique<Om>(*om);
-                                       state.ResumeTiming();
-                                       loop.attach(*copy);
-                                       loop(static_cast<std::size_t>(level));
-                                       loop.detach();
-                                       faces = copy->n_faces();
-                                       state.PauseTiming();
-                                       copy.reset();
-                                       state.ResumeTiming();
-                                     }
-                                     state.counters["faces_out"] = double(faces);
-                                   })
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
-  }
+  const auto build = [](const Mesh_d& m) {
+    Om om;
+    for (const auto& p : m.vertices) om.add_vertex(Om::Point(p.x, p.y, p.z));
+    for (const auto& f : m.faces) om.add_face(om.vertex_handle(f[0]), om.vertex_handle(f[1]), om.vertex_handle(f[2]));
+    return om;
+  };
+  register_peer(meshes, "OpenMesh", build, [](Om& om, int level) {
+    OpenMesh::Subdivider::Uniform::LoopT<Om, double> loop;  // its weight table: microseconds
+    loop.attach(om);
+    loop(static_cast<std::size_t>(level));
+    loop.detach();
+    return std::size_t(om.n_faces());
+  });
 }
 
 }  // namespace relgeo_bench

@@ -7,52 +7,19 @@
 # Run: python3 derive_box_spline_tables.py
 # Derivation of the regular Loop patch tables (exact rationals).
 from fractions import Fraction as Fr
+
+from lattice_forms import D6, add, limit, regular_refine, scale
 from itertools import product
 from math import factorial
 
-D6 = [(1,0),(0,1),(-1,1),(-1,0),(0,-1),(1,-1)]
 SLOTS = [(0,0),(1,0),(0,1),(-1,0),(0,-1),(1,-1),(2,-1),(2,0),(1,1),(0,2),(-1,2),(-1,1)]
 R = 7
 coarse = [(i,j) for i in range(-R,R+1) for j in range(-R,R+1)]
 cidx = {p:k for k,p in enumerate(coarse)}
 N = len(coarse)
 
-def add(a,b,s=Fr(1)):
-    r = dict(a)
-    for k,v in b.items():
-        r[k] = r.get(k,0) + s*v
-        if r[k] == 0: del r[k]
-    return r
-def scale(a,s): return {k:v*s for k,v in a.items()}
-
 def refine(vals):
-    # vals: dict point -> linear form (dict coarse-index -> coeff); returns fine values where defined
-    out = {}
-    def get(p): return vals.get(p)
-    pts = set(vals)
-    for (x,y) in [(x,y) for x in range(-2*R,2*R+1) for y in range(-2*R,2*R+1)]:
-        if x%2==0 and y%2==0:
-            p=(x//2,y//2); nb=[(p[0]+d[0],p[1]+d[1]) for d in D6]
-            if p in pts and all(q in pts for q in nb):
-                v=scale(vals[p],Fr(5,8))
-                for q in nb: v=add(v,vals[q],Fr(1,16))
-                out[(x,y)]=v
-        else:
-            if x%2==1 and y%2==0: p=((x-1)//2,y//2); q=((x+1)//2,y//2)
-            elif x%2==0 and y%2==1: p=(x//2,(y-1)//2); q=(x//2,(y+1)//2)
-            else: p=((x-1)//2,(y+1)//2); q=((x+1)//2,(y-1)//2)
-            np_=set((p[0]+d[0],p[1]+d[1]) for d in D6); nq=set((q[0]+d[0],q[1]+d[1]) for d in D6)
-            opp=list(np_&nq); assert len(opp)==2
-            if all(r in pts for r in [p,q]+opp):
-                v=add(scale(vals[p],Fr(3,8)),vals[q],Fr(3,8))
-                for r in opp: v=add(v,vals[r],Fr(1,8))
-                out[(x,y)]=v
-    return out
-
-def limit(vals,p):
-    v=scale(vals[p],Fr(1,2))
-    for d in D6: v=add(v,vals[(p[0]+d[0],p[1]+d[1])],Fr(1,12))
-    return v
+    return regular_refine(vals, range(-2*R,2*R+1), range(-2*R,2*R+1))
 
 L0={p:{cidx[p]:Fr(1)} for p in coarse}
 L1=refine(L0)

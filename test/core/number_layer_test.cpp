@@ -79,15 +79,18 @@ TEST(NumberLayer, DirectedRoundingBracketsTheExactValue) {
     const double hi = round_rational<double>(q, Rounding::upward);
     const double near = round_rational<double>(q);
     ASSERT_LE(exact_rational(lo), q);
-    if (std::isfinite(hi)) ASSERT_GE(exact_rational(hi), q);
+    if (std::isfinite(hi)) {
+      ASSERT_GE(exact_rational(hi), q);
+    }
     ASSERT_TRUE(near == lo || near == hi);
     ASSERT_TRUE(lo == hi || next_up(lo) == hi);
     EXPECT_EQ(lower_double(q), lo);
     EXPECT_EQ(upper_double(q), hi);
     const Mpfr_number<90> m(q);
     ASSERT_LE(exact_rational(lower_double(m)), Number_traits<Mpfr_number<90>>::to_rational(m));
-    if (std::isfinite(upper_double(m)))
+    if (std::isfinite(upper_double(m))) {
       ASSERT_GE(exact_rational(upper_double(m)), Number_traits<Mpfr_number<90>>::to_rational(m));
+    }
   }
 }
 
@@ -99,8 +102,12 @@ TEST(NumberLayer, OperationBoundsEncloseTheExactResult) {
     const double x = std::ldexp(mantissa(rng), exponent(rng)), y = std::ldexp(mantissa(rng), exponent(rng) / 2);
     const mpq_class qx = exact_rational(x), qy = exact_rational(y);
     const auto check = [&](Double_bounds b, const mpq_class& exact, const char* what) {
-      if (std::isfinite(b.lo)) ASSERT_LE(exact_rational(b.lo), exact) << what << std::hexfloat << x << " " << y;
-      if (std::isfinite(b.hi)) ASSERT_GE(exact_rational(b.hi), exact) << what << std::hexfloat << x << " " << y;
+      if (std::isfinite(b.lo)) {
+        ASSERT_LE(exact_rational(b.lo), exact) << what << std::hexfloat << x << " " << y;
+      }
+      if (std::isfinite(b.hi)) {
+        ASSERT_GE(exact_rational(b.hi), exact) << what << std::hexfloat << x << " " << y;
+      }
     };
     check(add_bounds(x, y), qx + qy, "+");
     check(mul_bounds(x, y), qx * qy, "*");

@@ -23,10 +23,7 @@ struct Bench_mesh {
   std::vector<int> levels;
 };
 
-/// Registers `loop/<mesh>/L<level>/<subject>` benchmarks for the peers of one
-/// translation unit (CGAL in loop_benchmark_cgal.cpp, OpenMesh in
-/// loop_benchmark_openmesh.cpp). Each sets the counter faces_out.
-/// The benchmarks of one peer: for each mesh, `build(mesh)` makes the peer's
+/// The benchmarks `loop/<mesh>/L<level>/<peer>` of one peer: for each mesh, `build(mesh)` makes the peer's
 /// mesh once; each iteration copies it (untimed), runs `subdivide(copy,
 /// level)`, which returns the faces out, and frees the copy (untimed).
 template <class Build, class Subdivide>
@@ -54,6 +51,9 @@ void register_peer(const std::vector<Bench_mesh>& meshes, const std::string& pee
   }
 }
 
+/// Registers the benchmarks of the peers of one translation unit (CGAL in
+/// loop_benchmark_cgal.cpp, OpenMesh in loop_benchmark_openmesh.cpp), through
+/// register_peer. Each sets the counter faces_out.
 void register_cgal(const std::vector<Bench_mesh>& meshes);
 void register_openmesh(const std::vector<Bench_mesh>& meshes);  // no-op without OpenMesh
 bool have_openmesh();

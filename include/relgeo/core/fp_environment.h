@@ -126,12 +126,26 @@ class Default_fp_environment_if<false> {
 
 namespace internal {
 
+/// Makes `value` complete in memory at this point. Compilers assume one fixed
+/// floating-point environment and may move arithmetic across a switch of
+/// it: clang 14 moved the conversion of call_in_default_fp_environment's
+/// result after the destructor that restores the caller's environment, so
+/// Failsafe_kernel<float>::from_double flushed a subnormal under FTZ after
+/// all. A volatile asm that reads and writes the value stays in order with
+/// the switches (also volatile asm and calls).
+template <class T>
+inline void complete_here(T& value) noexcept {
+  __asm__ volatile("" : "+m"(value));
+}
+
 /// f() evaluated in a Default_fp_environment, out of line so that none of
 /// its arithmetic is moved before the switch.
 template <class F>
 [[gnu::noinline]] auto call_in_default_fp_environment(const F& f) {
   const Default_fp_environment environment;
-  return f();
+  auto result = f();
+  complete_here(result);  // before the caller's environment is restored
+  return result;
 }
 
 /// f() in the default floating-point environment: inline when the caller's

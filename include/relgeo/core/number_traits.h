@@ -176,6 +176,16 @@ struct Number_traits<Interval> {
   }
 };
 
+namespace internal {
+/// 2^-n for 0 <= n <= 1074, at compile time (std::ldexp is constexpr in GCC
+/// only): halving is exact down to the smallest subnormal.
+constexpr double negative_power_of_two(int n) {
+  double x = 1.0;
+  for (int i = 0; i < n; ++i) x *= 0.5;
+  return x;
+}
+}  // namespace internal
+
 /// relgeo::Mpfr_number<Bits>.
 template <int Bits>
 struct Number_traits<Mpfr_number<Bits>> {
@@ -185,7 +195,7 @@ struct Number_traits<Mpfr_number<Bits>> {
   static constexpr bool is_exact = false;
   static constexpr bool is_dyadic = true;
   static constexpr int precision = Bits;
-  static constexpr double unit_roundoff = Bits <= 1074 ? std::ldexp(1.0, -Bits) : 0x1p-1074;
+  static constexpr double unit_roundoff = Bits <= 1074 ? internal::negative_power_of_two(Bits) : 0x1p-1074;
   static std::string name() { return "mpfr-" + std::to_string(Bits); }
   static bool is_finite(const T& x) { return x.is_finite(); }
   static Certified_sign sign(const T& x) {

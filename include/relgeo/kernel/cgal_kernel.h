@@ -228,7 +228,11 @@ class Cgal_kernel : public internal::Cgal_implicit_base<K> {
     if constexpr (!is_certified) {
       return f();
     } else {
-      if (internal::cgal_environment_is_default() & all_finite_points(points...)) [[likely]]
+      // `&` of both tests, not `&&`: no branch between them (on ints: clang
+      // warns about `&` on bools).
+      const int fast =
+          static_cast<int>(internal::cgal_environment_is_default()) & static_cast<int>(all_finite_points(points...));
+      if (fast) [[likely]]
         return f();
       return guarded_slow(f, points...);
     }

@@ -3,11 +3,6 @@
 // the same operands (converted before timing); and relgeo's Boolean under
 // CGAL's Epeck (Cgal_kernel<Epeck>: relgeo's algorithm in CGAL's arithmetic,
 // against CGAL's algorithm in the same arithmetic).
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/corefinement.h>
-#include <CGAL/Surface_mesh.h>
-
 #include <memory>
 #include <utility>
 
@@ -15,11 +10,10 @@
 #include "relgeo/boolean.h"
 #include "relgeo/kernel/cgal_kernel.h"
 #include "relgeo/mesh/cgal_conversion.h"
+#include "relgeo_fixtures/peers/cgal_corefinement.h"
 
 namespace relgeo_bench {
 namespace {
-
-namespace PMP = CGAL::Polygon_mesh_processing;
 
 // The Surface_mesh operands are built before the timed run (corefinement
 // changes them, so each run gets its own).
@@ -30,12 +24,7 @@ Timed_run corefine(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
   return [operands, op]() -> Inspect {
     auto& [sa, sb] = *operands;
     auto out = std::make_shared<CGAL::Surface_mesh<typename K::Point_3>>();
-    bool ok = false;
-    switch (op) {
-      case relgeo::Boolean_operation::union_of: ok = PMP::corefine_and_compute_union(sa, sb, *out); break;
-      case relgeo::Boolean_operation::intersection: ok = PMP::corefine_and_compute_intersection(sa, sb, *out); break;
-      default: ok = PMP::corefine_and_compute_difference(sa, sb, *out);
-    }
+    const bool ok = relgeo::peers::cgal_corefine_and_compute(sa, sb, op, *out);
     return [out, ok] {
       Run_outcome r;
       r.faces = out->number_of_faces();

@@ -21,11 +21,6 @@
 // which runs the same chains with Manifold's WebAssembly build.
 #include <benchmark/benchmark.h>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/corefinement.h>
-#include <CGAL/Surface_mesh.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -36,13 +31,13 @@
 #include "relgeo/boolean.h"
 #include "relgeo/mesh/cgal_conversion.h"
 #include "relgeo/mesh/solid_validation.h"
+#include "relgeo_fixtures/peers/cgal_corefinement.h"
 
 namespace {
 
 using namespace relgeo;
 using relgeo::test::Boolean_chain;
 using relgeo::test::Chain_family;
-namespace PMP = CGAL::Polygon_mesh_processing;
 
 int sphere_levels = 3;
 
@@ -118,11 +113,7 @@ Chain_outcome run_cgal(const Boolean_chain& c) {
     Surface operand = to_surface_mesh<typename K::Point_3>(m), out;
     bool ok = false;
     try {
-      switch (op) {
-        case Boolean_operation::union_of: ok = PMP::corefine_and_compute_union(current, operand, out); break;
-        case Boolean_operation::intersection: ok = PMP::corefine_and_compute_intersection(current, operand, out); break;
-        default: ok = PMP::corefine_and_compute_difference(current, operand, out);
-      }
+      ok = peers::cgal_corefine_and_compute(current, operand, op, out);
     } catch (const std::exception&) {
       ok = false;  // a self-intersecting operand
     }

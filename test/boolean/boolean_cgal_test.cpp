@@ -5,10 +5,7 @@
 // characteristic, a closed oriented manifold.
 #include <gtest/gtest.h>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -26,6 +23,7 @@
 #include "relgeo/mesh/mesh_io.h"
 #include "relgeo/mesh/solid_validation.h"
 #include "relgeo/mesh/validity.h"
+#include "relgeo_fixtures/peers/cgal_corefinement.h"
 #include "support/soundness_data.h"
 
 namespace relgeo::test {
@@ -56,9 +54,7 @@ Oracle cgal(const Mesh& a, const Mesh& b, Op op) {
     return {u.volume - i.volume, 0};
   }
   Surface sa = to_surface(a), sb = to_surface(b), out;
-  const bool ok = op == Op::union_of       ? PMP::corefine_and_compute_union(sa, sb, out)
-                  : op == Op::intersection ? PMP::corefine_and_compute_intersection(sa, sb, out)
-                                           : PMP::corefine_and_compute_difference(sa, sb, out);
+  const bool ok = peers::cgal_corefine_and_compute(sa, sb, op, out);
   EXPECT_TRUE(ok);
   const long euler = static_cast<long>(out.number_of_vertices()) - static_cast<long>(out.number_of_edges()) +
                      static_cast<long>(out.number_of_faces());
@@ -137,9 +133,7 @@ TEST(BooleanCgalOracle, TheChainsEndOnTheVolumeOfCgalsExactChain) {
     Surface exact = to_surface(c.start);
     for (const auto& [op, m] : c.steps) {
       Surface operand = to_surface(m), out;
-      const bool ok = op == Op::union_of       ? PMP::corefine_and_compute_union(exact, operand, out)
-                      : op == Op::intersection ? PMP::corefine_and_compute_intersection(exact, operand, out)
-                                               : PMP::corefine_and_compute_difference(exact, operand, out);
+      const bool ok = peers::cgal_corefine_and_compute(exact, operand, op, out);
       ASSERT_TRUE(ok) << name;
       exact = std::move(out);
     }

@@ -1,13 +1,11 @@
 // tools/relgeo/commands/boolean/oracle.cpp — CGAL's corefinement with Epeck
 // on the same operands, and how far relgeo's result is from it: the volume of
 // their symmetric difference (relgeo's exact Boolean of the two outputs) and
-// their symmetric Hausdorff distance (CGAL PMP, sampled). Its own
-// translation unit: the corefinement headers take a minute to compile.
+// their symmetric Hausdorff distance (CGAL PMP, sampled). The corefinement
+// itself is compiled once for the tests, benchmarks and tool
+// (relgeo_fixtures/peers/cgal_corefinement.h).
 #include <cmath>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
@@ -15,6 +13,7 @@
 #include "commands/boolean/facade.h"
 #include "relgeo/boolean.h"
 #include "relgeo/mesh/cgal_conversion.h"
+#include "relgeo_fixtures/peers/cgal_corefinement.h"
 
 namespace relgeo::tool {
 namespace {
@@ -51,17 +50,14 @@ Oracle_comparison compare_with_cgal(const Mesh_double& a, const Mesh_double& b, 
   Oracle_comparison c;
   const auto corefine = [&](Boolean_operation o, CGAL::Surface_mesh<Epeck::Point_3>& out) {
     auto sa = surface<Epeck>(a), sb = surface<Epeck>(b);
-    switch (o) {
-      case Boolean_operation::union_of: return PMP::corefine_and_compute_union(sa, sb, out);
-      case Boolean_operation::intersection: return PMP::corefine_and_compute_intersection(sa, sb, out);
-      default: return PMP::corefine_and_compute_difference(sa, sb, out);
-    }
+    return peers::cgal_corefine_and_compute(sa, sb, o, out);
   };
   Mesh_double cgal;
   if (op == Boolean_operation::symmetric_difference) {  // CGAL has none: (A - B) and (B - A) side by side
     CGAL::Surface_mesh<Epeck::Point_3> ab, ba;
     auto sa = surface<Epeck>(a), sb = surface<Epeck>(b), sa2 = surface<Epeck>(a), sb2 = surface<Epeck>(b);
-    c.cgal_ok = PMP::corefine_and_compute_difference(sa, sb, ab) && PMP::corefine_and_compute_difference(sb2, sa2, ba);
+    c.cgal_ok = peers::cgal_corefine_and_compute(sa, sb, Boolean_operation::difference, ab) &&
+                peers::cgal_corefine_and_compute(sb2, sa2, Boolean_operation::difference, ba);
     if (!c.cgal_ok) return c;
     c.cgal_volume = CGAL::to_double(PMP::volume(ab)) + CGAL::to_double(PMP::volume(ba));
     cgal = doubles(ab);

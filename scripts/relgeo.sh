@@ -123,7 +123,7 @@ run_sanitized_tests() {
     local bin=$1 out=$logs/${1##*/}.log
     if RELGEO_TEST_SCALE=0.05 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
          "$bin" --gtest_brief=1 >"$out" 2>&1; then
-      log "sanitized: ${bin##*/}: $(grep -o 'PASSED.*' "$out" | tail -n 1)"
+      log "sanitized: ${bin##*/}: $(grep -oE 'PASSED  \] [0-9]+ tests?' "$out" | tail -n 1 | grep -oE '[0-9]+ tests?') passed"
     else
       log "sanitized: ${bin##*/} FAILED; log:"
       local report='Failure$|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer|\[  FAILED  \]'

@@ -16,8 +16,16 @@ string(REGEX REPLACE "^[^=]*=" "" ccache "${ccache}")
 if(ccache)
   set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${ccache})
 endif()
+# The check is about the package (its targets, headers, libraries), not the
+# programs' speed: the client compiles at relgeo's RELGEO_UNTIMED_OPTIMIZATION
+# when that is set, as relgeo's own untimed code does.
+file(STRINGS ${BUILD_DIR}/CMakeCache.txt untimed REGEX "^RELGEO_UNTIMED_OPTIMIZATION:[A-Z]+=.+")
+string(REGEX REPLACE "^[^=]*=" "" untimed "${untimed}")
+if(untimed)
+  set(release_flags "-DCMAKE_CXX_FLAGS_RELEASE=${untimed} -DNDEBUG")
+endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/client -B ${WORK_DIR}/client
-                        -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release ${launcher}
+                        -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release ${launcher} ${release_flags}
                 RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "configuring the client against the installed package failed (${rc})")

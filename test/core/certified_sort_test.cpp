@@ -32,8 +32,11 @@ TEST(CertifiedSort, StableKeepsTheOrderOfEqualElements) {
   for (int i = 0; i < 200; ++i) v.push_back({i % 7, i});
   EXPECT_TRUE(certified_sort(
       v.begin(), v.end(), [](const auto& a, const auto& b) { return three_way(a.first, b.first); }, /*stable=*/true));
-  for (std::size_t i = 1; i < v.size(); ++i)
-    if (v[i - 1].first == v[i].first) EXPECT_LT(v[i - 1].second, v[i].second);
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    if (v[i - 1].first == v[i].first) {
+      EXPECT_LT(v[i - 1].second, v[i].second);
+    }
+  }
 }
 
 TEST(CertifiedSort, AnUncertainAnswerFailsTheSort) {

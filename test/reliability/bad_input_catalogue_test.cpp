@@ -15,7 +15,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
-#include <initializer_list>
 #include <map>
 #include <string>
 #include <typeinfo>
@@ -46,14 +45,17 @@ std::string shown(std::string what) {
   return what;
 }
 
-void expect_mentions(const std::string& message, std::initializer_list<const char*> parts) {
-  for (const char* p : parts) EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
+/// Fragments an error message must contain (owned: a catalogue row keeps them).
+using Parts = std::vector<std::string>;
+
+void expect_mentions(const std::string& message, const Parts& parts) {
+  for (const std::string& p : parts) EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
 }
 
 /// Runs f, which must throw exactly E (a relgeo::Error) mentioning `parts`,
 /// quickly and without a large allocation. Returns "E: message".
 template <class E, class F>
-std::string expect_error(const char* name, F f, std::initializer_list<const char*> parts) {
+std::string expect_error(const char* name, F f, const Parts& parts) {
   const Allocation_watch watch;
   const auto start = std::chrono::steady_clock::now();
   std::string observed;
@@ -73,7 +75,7 @@ std::string expect_error(const char* name, F f, std::initializer_list<const char
   return observed;
 }
 
-std::string read_error_unreadable(const std::string& file, std::initializer_list<const char*> parts) {
+std::string read_error_unreadable(const std::string& file, const Parts& parts) {
   return expect_error<Unreadable_file>("Unreadable_file", [&] { (void)read_mesh(path_of(file)); }, parts);
 }
 
@@ -93,11 +95,11 @@ std::string expect_defects(const Mesh_report& r, std::map<Mesh_defect, std::size
 
 /// Loop refinement (naive double) refuses the mesh with E mentioning `parts`.
 template <class E>
-std::string loop_refuses(const Mesh& m, std::initializer_list<const char*> parts) {
+std::string loop_refuses(const Mesh& m, const Parts& parts) {
   return "Loop: " + expect_error<E>("Invalid_mesh/Invalid_input", [&] { (void)Loop_subdivider<Naive_kernel<double>>().refine(m, 1); }, parts);
 }
 
-std::string points_error(const std::string& file, bool parse_error, std::initializer_list<const char*> parts) {
+std::string points_error(const std::string& file, bool parse_error, const Parts& parts) {
   if (parse_error)
     return expect_error<io::Parse_error>("Parse_error", [&] { (void)io::read_points_2(path_of(file)); }, parts);
   return expect_error<Non_finite_input>("Non_finite_input", [&] { (void)io::read_points_2(path_of(file)); }, parts);
@@ -109,75 +111,61 @@ struct Entry {
   std::function<std::string()> check;
 };
 
+/// A mesh file every reader refuses with Unreadable_file mentioning `parts`.
+Entry unreadable(const char* file, const char* defect, Parts parts) {
+  return {file, defect, [file, parts] { return read_error_unreadable(file, parts); }};
+}
+
+/// A mesh file read_mesh refuses with E (named `name`) mentioning `parts`.
+template <class E>
+Entry refused(const char* file, const char* defect, const char* name, Parts parts) {
+  return {file, defect, [file, name, parts] { return expect_error<E>(name, [file] { (void)read(file); }, parts); }};
+}
+
 std::vector<Entry> catalogue() {
   return {
       // ---- empty and truncated files ----------------------------------------------
-      {"empty.off", "0 bytes", [] { return read_error_unreadable("empty.off", {"is empty"}); }},
-      {"empty.obj", "0 bytes", [] { return read_error_unreadable("empty.obj", {"is empty"}); }},
-      {"empty.ply", "0 bytes", [] { return read_error_unreadable("empty.ply", {"is empty"}); }},
-      {"empty.stl", "0 bytes", [] { return read_error_unreadable("empty.stl", {"is empty"}); }},
-      {"blank_lines.off", "blank lines only", [] { return read_error_unreadable("blank_lines.off", {"is empty"}); }},
-      {"truncated.off", "ends inside the faces",
-       [] { return read_error_unreadable("truncated.off", {"line 2", "4 faces", "lines follow"}); }},
-      {"truncated_header.off", "the face count is missing",
-       [] { return read_error_unreadable("truncated_header.off", {"line 2", "ends inside the header"}); }},
-      {"truncated.ply", "binary, ends inside the last face",
-       [] { return read_error_unreadable("truncated.ply", {"element 'face' item 3"}); }},
-      {"truncated.stl", "binary, ends inside the last triangle",
-       [] { return read_error_unreadable("truncated.stl", {"announces 4 triangles but holds 3"}); }},
+      unreadable("empty.off", "0 bytes", {"is empty"}),
+      unreadable("empty.obj", "0 bytes", {"is empty"}),
+      unreadable("empty.ply", "0 bytes", {"is empty"}),
+      unreadable("empty.stl", "0 bytes", {"is empty"}),
+      unreadable("blank_lines.off", "blank lines only", {"is empty"}),
+      unreadable("truncated.off", "ends inside the faces", {"line 2", "4 faces", "lines follow"}),
+      unreadable("truncated_header.off", "the face count is missing", {"line 2", "ends inside the header"}),
+      unreadable("truncated.ply", "binary, ends inside the last face", {"element 'face' item 3"}),
+      unreadable("truncated.stl", "binary, ends inside the last triangle", {"announces 4 triangles but holds 3"}),
       // ---- garbage ----------------------------------------------------------------------
-      {"garbage.obj", "no OBJ statement", [] { return read_error_unreadable("garbage.obj", {"cannot parse"}); }},
-      {"garbage.ply", "words where numbers belong",
-       [] { return read_error_unreadable("garbage.ply", {"element 'vertex' item 0", "'zero' is not a number"}); }},
-      {"garbage.stl", "60 bytes, no 'solid'",
-       [] { return read_error_unreadable("garbage.stl", {"60 bytes, fewer than its 84-byte header"}); }},
-      {"not_off_keyword.off", "MESH instead of OFF",
-       [] { return read_error_unreadable("not_off_keyword.off", {"line 1", "'MESH' is not an OFF keyword"}); }},
+      unreadable("garbage.obj", "no OBJ statement", {"cannot parse"}),
+      unreadable("garbage.ply", "words where numbers belong", {"element 'vertex' item 0", "'zero' is not a number"}),
+      unreadable("garbage.stl", "60 bytes, no 'solid'", {"60 bytes, fewer than its 84-byte header"}),
+      unreadable("not_off_keyword.off", "MESH instead of OFF", {"line 1", "'MESH' is not an OFF keyword"}),
       // ---- wrong counts, huge counts --------------------------------------------------
-      {"wrong_counts_fewer.off", "header: 3 faces, 4 follow",
-       [] { return read_error_unreadable("wrong_counts_fewer.off", {"line 10", "content after the 3 faces"}); }},
-      {"wrong_counts_more.ply", "header: 5 faces, 4 follow",
-       [] { return read_error_unreadable("wrong_counts_more.ply", {"element 'face' item 4", "ends early"}); }},
-      {"huge_face_count.off", "header: 10^7 faces, 4 follow",
-       [] { return read_error_unreadable("huge_face_count.off", {"line 2", "10000000 faces", "lines follow"}); }},
-      {"huge_face_count.ply", "header: 10^7 faces, 4 follow",
-       [] { return read_error_unreadable("huge_face_count.ply", {"element 'face' item 4"}); }},
-      {"huge_triangle_count.stl", "header: 10^7 triangles, 4 follow",
-       [] { return read_error_unreadable("huge_triangle_count.stl", {"announces 10000000 triangles but holds 4"}); }},
-      {"huge_corner_count.off", "a face of 10^9 corners",
-       [] { return read_error_unreadable("huge_corner_count.off", {"line 7", "1000000000 corners"}); }},
-      {"fuzz_off_binary_huge_corner_count.off", "OFF BINARY, a face of 1.07e9 corners (found by fuzz/mesh_off)",
-       [] { return read_error_unreadable("fuzz_off_binary_huge_corner_count.off", {"face 1 announces more corners"}); }},
-      {"fuzz_ply_property_before_element.ply", "a property line before any element (found by fuzz/mesh_ply)",
-       [] { return read_error_unreadable("fuzz_ply_property_before_element.ply", {"header line 4", "property before any element"}); }},
-      {"list_coordinate.ply", "a vertex coordinate declared as a list (found by fuzz/mesh_ply, reduced)",
-       [] { return read_error_unreadable("list_coordinate.ply", {"header line 6", "vertex coordinate 'z' declared as a list"}); }},
-      {"misread_number.ply", "'1..0', which CGAL reads as two numbers, then 2^32 - 1 read as a list count (found by fuzz/mesh_ply, reduced)",
-       [] { return read_error_unreadable("misread_number.ply", {"element 'vertex' item 0", "'1..0' is not a finite decimal number"}); }},
-      {"signed_count_overflow.ply", "a list count of 200 in a signed 8-bit type (CGAL wraps it to -56)",
-       [] { return read_error_unreadable("signed_count_overflow.ply", {"element 'face' item 0", "list count '200' is not valid"}); }},
+      unreadable("wrong_counts_fewer.off", "header: 3 faces, 4 follow", {"line 10", "content after the 3 faces"}),
+      unreadable("wrong_counts_more.ply", "header: 5 faces, 4 follow", {"element 'face' item 4", "ends early"}),
+      unreadable("huge_face_count.off", "header: 10^7 faces, 4 follow", {"line 2", "10000000 faces", "lines follow"}),
+      unreadable("huge_face_count.ply", "header: 10^7 faces, 4 follow", {"element 'face' item 4"}),
+      unreadable("huge_triangle_count.stl", "header: 10^7 triangles, 4 follow", {"announces 10000000 triangles but holds 4"}),
+      unreadable("huge_corner_count.off", "a face of 10^9 corners", {"line 7", "1000000000 corners"}),
+      unreadable("fuzz_off_binary_huge_corner_count.off", "OFF BINARY, a face of 1.07e9 corners (found by fuzz/mesh_off)", {"face 1 announces more corners"}),
+      unreadable("fuzz_ply_property_before_element.ply", "a property line before any element (found by fuzz/mesh_ply)", {"header line 4", "property before any element"}),
+      unreadable("list_coordinate.ply", "a vertex coordinate declared as a list (found by fuzz/mesh_ply, reduced)", {"header line 6", "vertex coordinate 'z' declared as a list"}),
+      unreadable("misread_number.ply", "'1..0', which CGAL reads as two numbers, then 2^32 - 1 read as a list count (found by fuzz/mesh_ply, reduced)", {"element 'vertex' item 0", "'1..0' is not a finite decimal number"}),
+      unreadable("signed_count_overflow.ply", "a list count of 200 in a signed 8-bit type (CGAL wraps it to -56)", {"element 'face' item 0", "list count '200' is not valid"}),
       // ---- indices ----------------------------------------------------------------------
-      {"negative_index.off", "index -3",
-       [] { return read_error_unreadable("negative_index.off", {"line 10", "corner 2 of face 3", "'-3'"}); }},
+      unreadable("negative_index.off", "index -3", {"line 10", "corner 2 of face 3", "'-3'"}),
       {"index_out_of_range.off", "index 7 of 4 vertices",
        [] {
          std::string s = expect_error<Invalid_mesh>("Invalid_mesh", [] { (void)read("index_out_of_range.off"); },
                                                     {"index_out_of_range (3, 7)"});
          return s;
        }},
-      {"index_out_of_range.ply", "binary, index 9 of 4 vertices",
-       [] { return expect_error<Invalid_mesh>("Invalid_mesh", [] { (void)read("index_out_of_range.ply"); }, {"index_out_of_range (3, 9)"}); }},
-      {"relative_index_out_of_range.obj", "relative index -9 of 3 vertices",
-       [] { return read_error_unreadable("relative_index_out_of_range.obj", {"cannot parse"}); }},
-      {"two_corners.obj", "a face of 2 corners",
-       [] { return expect_error<Invalid_input>("Invalid_input", [] { (void)read("two_corners.obj"); }, {"polygon 0 has fewer than 3 corners"}); }},
+      refused<Invalid_mesh>("index_out_of_range.ply", "binary, index 9 of 4 vertices", "Invalid_mesh", {"index_out_of_range (3, 9)"}),
+      unreadable("relative_index_out_of_range.obj", "relative index -9 of 3 vertices", {"cannot parse"}),
+      refused<Invalid_input>("two_corners.obj", "a face of 2 corners", "Invalid_input", {"polygon 0 has fewer than 3 corners"}),
       // ---- NaN, infinity ----------------------------------------------------------------
-      {"nan.off", "'nan' coordinate",
-       [] { return expect_error<Non_finite_input>("Non_finite_input", [] { (void)read("nan.off"); }, {"line 4", "vertex 1", "'nan'"}); }},
-      {"inf.ply", "binary +inf coordinate",
-       [] { return expect_error<Non_finite_input>("Non_finite_input", [] { (void)read("inf.ply"); }, {"vertex 1"}); }},
-      {"beyond_double.off", "1e999",
-       [] { return expect_error<Non_finite_input>("Non_finite_input", [] { (void)read("beyond_double.off"); }, {"line 4", "'1e999'"}); }},
+      refused<Non_finite_input>("nan.off", "'nan' coordinate", "Non_finite_input", {"line 4", "vertex 1", "'nan'"}),
+      refused<Non_finite_input>("inf.ply", "binary +inf coordinate", "Non_finite_input", {"vertex 1"}),
+      refused<Non_finite_input>("beyond_double.off", "1e999", "Non_finite_input", {"line 4", "'1e999'"}),
       // ---- meshes that read fine: what the checks say ----------------------------------
       {"duplicated_vertex.off", "vertices 3 and 4 coincide; faces use both",
        [] {

@@ -52,6 +52,26 @@ inline int small_int(std::mt19937_64& g, int lo, int hi) {
   return lo + static_cast<int>(g() % static_cast<std::uint64_t>(hi - lo + 1));
 }
 
+/// The family `name` of n cases, case i = make(g, i) with one generator g
+/// seeded by `seed` (cases drawn in order: the family depends on the seed only).
+template <class Case, class Make>
+Workload<Case> generated(const char* name, std::size_t n, std::uint64_t seed, Make make) {
+  std::mt19937_64 g(seed);
+  Workload<Case> w{name, {}};
+  w.cases.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) w.cases.push_back(make(g, i));
+  return w;
+}
+
+/// `base` renamed, each case changed in place by change(g, case), g seeded by `seed`.
+template <class Case, class Change>
+Workload<Case> changed(Workload<Case> base, const char* name, std::uint64_t seed, Change change) {
+  std::mt19937_64 g(seed);
+  base.name = name;
+  for (Case& c : base.cases) change(g, c);
+  return base;
+}
+
 }  // namespace internal_workloads
 
 /// The three orientation grids of Kettner et al. (Figs. 2-4), SPEC Sec. 3.1.
@@ -80,31 +100,25 @@ inline std::vector<Orientation_2_case> grid_cases(const Orientation_grid_triple&
 
 /// Uniform points in [-1, 1]^2: almost never near-degenerate.
 inline Workload<Orientation_2_case> uniform_2(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 g(seed);
-  Workload<Orientation_2_case> w{"uniform", {}};
-  w.cases.reserve(n);
-  auto u = [&] { return internal_workloads::uniform(g, -1, 1); };
-  for (std::size_t i = 0; i < n; ++i) w.cases.push_back({u(), u(), u(), u(), u(), u()});
-  return w;
+  return internal_workloads::generated<Orientation_2_case>("uniform", n, seed, [](std::mt19937_64& g, std::size_t) {
+    auto u = [&] { return internal_workloads::uniform(g, -1, 1); };
+    return Orientation_2_case{u(), u(), u(), u(), u(), u()};
+  });
 }
 
 /// q on the segment pr (rounded), then moved by up to 4 ulps per coordinate;
 /// magnitudes from 2^-4 to 2^10.
 inline Workload<Orientation_2_case> near_collinear_2(std::size_t n, std::uint64_t seed) {
   using namespace internal_workloads;
-  std::mt19937_64 g(seed);
-  Workload<Orientation_2_case> w{"near-collinear", {}};
-  w.cases.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  return generated<Orientation_2_case>("near-collinear", n, seed, [](std::mt19937_64& g, std::size_t) {
     const double scale = std::ldexp(1.0, small_int(g, -4, 10));
     const double px = uniform(g, -scale, scale), py = uniform(g, -scale, scale);
     const double rx = uniform(g, -scale, scale), ry = uniform(g, -scale, scale);
     const double t = uniform(g, -0.5, 1.5);
     const double qx = moved_by_ulps(px + t * (rx - px), small_int(g, -4, 4));
     const double qy = moved_by_ulps(py + t * (ry - py), small_int(g, -4, 4));
-    w.cases.push_back({px, py, qx, qy, rx, ry});
-  }
-  return w;
+    return Orientation_2_case{px, py, qx, qy, rx, ry};
+  });
 }
 
 /// Near-collinear cases scaled by 2^e, e in [-700, 700] (the exact sign is
@@ -113,62 +127,48 @@ inline Workload<Orientation_2_case> near_collinear_2(std::size_t n, std::uint64_
 /// (coordinates stay below 2^1011: finite).
 inline Workload<Orientation_2_case> extreme_magnitudes_2(std::size_t n, std::uint64_t seed) {
   using namespace internal_workloads;
-  std::mt19937_64 g(seed);
-  Workload<Orientation_2_case> w = near_collinear_2(n, seed ^ 0x9e3779b97f4a7c15ULL);
-  w.name = "extreme-magnitudes";
-  for (auto& c : w.cases) {
-    const int e = small_int(g, -700, 700);
-    for (double* v : {&c.px, &c.py, &c.qx, &c.qy, &c.rx, &c.ry}) *v = std::ldexp(*v, e);
-    if (g() % 4 == 0) {
-      const int e2 = small_int(g, -300, 300);
-      c.rx = std::ldexp(c.rx, e2);
-      c.ry = std::ldexp(c.ry, e2);
-    }
-  }
-  return w;
+  return changed(near_collinear_2(n, seed ^ 0x9e3779b97f4a7c15ULL), "extreme-magnitudes", seed,
+                 [](std::mt19937_64& g, Orientation_2_case& c) {
+                   const int e = small_int(g, -700, 700);
+                   for (double* v : {&c.px, &c.py, &c.qx, &c.qy, &c.rx, &c.ry}) *v = std::ldexp(*v, e);
+                   if (g() % 4 == 0) {
+                     const int e2 = small_int(g, -300, 300);
+                     c.rx = std::ldexp(c.rx, e2);
+                     c.ry = std::ldexp(c.ry, e2);
+                   }
+                 });
 }
 
 /// Exact degeneracies: repeated points, shared coordinates, points on lines
 /// through integer coordinates, axis-parallel lines.
 inline Workload<Orientation_2_case> degenerate_2(std::size_t n, std::uint64_t seed) {
   using namespace internal_workloads;
-  std::mt19937_64 g(seed);
-  Workload<Orientation_2_case> w{"degenerate", {}};
-  w.cases.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  return generated<Orientation_2_case>("degenerate", n, seed, [](std::mt19937_64& g, std::size_t i) {
     const double px = small_int(g, -1000, 1000), py = small_int(g, -1000, 1000);
     const double dx = small_int(g, -50, 50), dy = small_int(g, -50, 50);
     const int a = small_int(g, -20, 20), b = small_int(g, -20, 20);
     switch (i % 4) {
-      case 0: w.cases.push_back({px, py, px + a * dx, py + a * dy, px + b * dx, py + b * dy}); break;
-      case 1: w.cases.push_back({px, py, px, py, px + dx, py + dy}); break;          // p == q
-      case 2: w.cases.push_back({px, py, px + a, py, px + b, py}); break;            // horizontal
-      default: w.cases.push_back({px / 8, py / 8, px / 8, py / 8 + a, px / 8, py / 8 + b});  // vertical
+      case 0: return Orientation_2_case{px, py, px + a * dx, py + a * dy, px + b * dx, py + b * dy};
+      case 1: return Orientation_2_case{px, py, px, py, px + dx, py + dy};                      // p == q
+      case 2: return Orientation_2_case{px, py, px + a, py, px + b, py};                        // horizontal
+      default: return Orientation_2_case{px / 8, py / 8, px / 8, py / 8 + a, px / 8, py / 8 + b};  // vertical
     }
-  }
-  return w;
+  });
 }
 
 /// Uniform points in [-1, 1]^3.
 inline Workload<Orientation_3_case> uniform_3(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 g(seed);
-  Workload<Orientation_3_case> w{"uniform", {}};
-  w.cases.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  return internal_workloads::generated<Orientation_3_case>("uniform", n, seed, [](std::mt19937_64& g, std::size_t) {
     Orientation_3_case c{};
     for (double& v : c.c) v = internal_workloads::uniform(g, -1, 1);
-    w.cases.push_back(c);
-  }
-  return w;
+    return c;
+  });
 }
 
 /// s = p + a (q - p) + b (r - p) rounded, then moved by up to 4 ulps per coordinate.
 inline Workload<Orientation_3_case> near_coplanar_3(std::size_t n, std::uint64_t seed) {
   using namespace internal_workloads;
-  std::mt19937_64 g(seed);
-  Workload<Orientation_3_case> w{"near-coplanar", {}};
-  w.cases.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  return generated<Orientation_3_case>("near-coplanar", n, seed, [](std::mt19937_64& g, std::size_t) {
     const double scale = std::ldexp(1.0, small_int(g, -4, 10));
     Orientation_3_case c{};
     for (int k = 0; k < 9; ++k) c.c[k] = uniform(g, -scale, scale);
@@ -177,32 +177,25 @@ inline Workload<Orientation_3_case> near_coplanar_3(std::size_t n, std::uint64_t
       const double v = c.c[d] + a * (c.c[3 + d] - c.c[d]) + b * (c.c[6 + d] - c.c[d]);
       c.c[9 + d] = moved_by_ulps(v, small_int(g, -4, 4));
     }
-    w.cases.push_back(c);
-  }
-  return w;
+    return c;
+  });
 }
 
 /// Near-coplanar cases scaled by 2^e, e in [-1000, 1000].
 inline Workload<Orientation_3_case> extreme_magnitudes_3(std::size_t n, std::uint64_t seed) {
   using namespace internal_workloads;
-  std::mt19937_64 g(seed);
-  Workload<Orientation_3_case> w = near_coplanar_3(n, seed ^ 0x9e3779b97f4a7c15ULL);
-  w.name = "extreme-magnitudes";
-  for (auto& c : w.cases) {
-    const int e = small_int(g, -1000, 1000);
-    for (double& v : c.c) v = std::ldexp(v, e);
-  }
-  return w;
+  return changed(near_coplanar_3(n, seed ^ 0x9e3779b97f4a7c15ULL), "extreme-magnitudes", seed,
+                 [](std::mt19937_64& g, Orientation_3_case& c) {
+                   const int e = small_int(g, -1000, 1000);
+                   for (double& v : c.c) v = std::ldexp(v, e);
+                 });
 }
 
 /// Exact degeneracies in space: repeated points, integer coplanar points,
 /// axis-parallel planes.
 inline Workload<Orientation_3_case> degenerate_3(std::size_t n, std::uint64_t seed) {
   using namespace internal_workloads;
-  std::mt19937_64 g(seed);
-  Workload<Orientation_3_case> w{"degenerate", {}};
-  w.cases.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  return generated<Orientation_3_case>("degenerate", n, seed, [](std::mt19937_64& g, std::size_t i) {
     Orientation_3_case c{};
     for (int k = 0; k < 9; ++k) c.c[k] = small_int(g, -1000, 1000);
     const int a = small_int(g, -20, 20), b = small_int(g, -20, 20);
@@ -218,9 +211,8 @@ inline Workload<Orientation_3_case> degenerate_3(std::size_t n, std::uint64_t se
         for (int k = 2; k < 12; k += 3) c.c[k] = c.c[2];
         c.c[9] = a, c.c[10] = b;
     }
-    w.cases.push_back(c);
-  }
-  return w;
+    return c;
+  });
 }
 
 /// The standard orientation_2 workloads with n cases each (grids excluded).

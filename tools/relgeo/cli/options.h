@@ -29,6 +29,15 @@ void add_kernel_option(CLI::App& cmd, std::string& kernel, std::string_view defa
 /// both filling `file`. \throws Usage_error (while parsing) when both are given.
 void add_file_operand(CLI::App& cmd, std::string& file, const std::string& flag, const std::string& help);
 
+/// `name VALUE` filling `value`: the help text, the value's name in it
+/// (`type`, e.g. "N") and the default it shows (`shown_default`: what the
+/// command uses when the option is absent). Returns the option for checks.
+template <class T>
+CLI::Option* add_value_option(CLI::App& cmd, const std::string& name, T& value, const std::string& help,
+                              const std::string& type, const std::string& shown_default) {
+  return cmd.add_option(name, value, help)->type_name(type)->default_str(shown_default);
+}
+
 /// --FLAG FILE for an output picture/report (empty: none).
 void add_output_option(CLI::App& cmd, std::string& file, const std::string& flag, const std::string& help);
 

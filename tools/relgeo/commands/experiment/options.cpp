@@ -24,7 +24,7 @@ std::string experiment_help_footer() {
 }
 
 void declare_experiment_options(CLI::App& cmd, Experiment_options& o) {
-  cmd.add_option("--output", o.output, "results folder (created if missing)")->type_name("DIR")->default_str("results");
+  add_value_option(cmd, "--output", o.output, "results folder (created if missing)", "DIR", "results");
   cmd.add_flag("--quick", o.quick, "small workloads (10000 cases instead of 100000)");
   cmd.add_flag("--quiet", o.quiet, "no progress lines on stderr");
   cmd.add_option("--only", o.sections, "run only this section (repeatable)")->type_name("SECTION");

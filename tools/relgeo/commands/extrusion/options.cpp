@@ -1,6 +1,8 @@
 // tools/relgeo/commands/extrusion/options.cpp — `relgeo extrusion`'s options and help.
 #include "cli/options.h"
+
 #include "commands/extrusion/command.h"
+#include "commands/hull/command.h"
 
 namespace relgeo::tool {
 
@@ -44,10 +46,7 @@ std::string extrusion_help_footer() {
 void declare_extrusion_options(CLI::App& cmd, Extrusion_command_options& o) {
   add_file_operand(cmd, o.input, "input", "the contour (JSON), '-' for standard input");
   add_kernel_option(cmd, o.kernel, "failsafe");
-  cmd.add_option("--algorithm", o.algorithm,
-                 "the hull algorithm: graham-fortune, monotone-chain, graham-incremental, cgal")
-      ->type_name("ALGORITHM")
-      ->default_str("graham-fortune");
+  add_hull_algorithm_option(cmd, o.algorithm);
   cmd.add_option("--uncertainty", o.uncertainty, "relative input uncertainty (default: the file's, else 1e-3)")
       ->check(CLI::NonNegativeNumber)
       ->type_name("DELTA");
@@ -57,7 +56,7 @@ void declare_extrusion_options(CLI::App& cmd, Extrusion_command_options& o) {
       ->type_name("EPS");
   cmd.add_flag("--no-prune", o.no_prune, "condition 3 on every non-adjacent pair (quadratic)");
   add_output_option(cmd, o.svg, "svg", "write a picture of the contour, its control hulls and offending curves");
-  cmd.add_option("--max-listed", o.max_listed, "offending problems listed")->type_name("N")->default_str("50");
+  add_value_option(cmd, "--max-listed", o.max_listed, "offending problems listed", "N", "50");
   add_format_option(cmd, o.format);
 }
 

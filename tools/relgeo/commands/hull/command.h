@@ -28,4 +28,7 @@ std::string hull_help_footer();
 /// Declares the options on the subcommand.         [options.cpp]
 void declare_hull_options(CLI::App& cmd, Hull_command_options& options);
 
+/// --algorithm ALGORITHM: the hull algorithms (hull and extrusion).   [options.cpp]
+void add_hull_algorithm_option(CLI::App& cmd, std::string& algorithm);
+
 }  // namespace relgeo::tool

@@ -32,11 +32,15 @@ std::string hull_help_footer() {
          "vertices that are not exact-hull vertices orange squares; y up.\n";
 }
 
+void add_hull_algorithm_option(CLI::App& cmd, std::string& algorithm) {
+  add_value_option(cmd, "--algorithm", algorithm,
+                   "the hull algorithm: graham-incremental, graham-fortune, monotone-chain or cgal", "ALGORITHM",
+                   "graham-fortune");
+}
+
 void declare_hull_options(CLI::App& cmd, Hull_command_options& o) {
   add_file_operand(cmd, o.input, "input", "the point file, '-' for standard input");
-  cmd.add_option("--algorithm", o.algorithm, "graham-incremental, graham-fortune, monotone-chain or cgal")
-      ->type_name("ALGORITHM")
-      ->default_str("graham-fortune");
+  add_hull_algorithm_option(cmd, o.algorithm);
   add_kernel_option(cmd, o.kernel, "filtered");
   cmd.add_flag("--all-points", o.all_points,
                "graham-fortune, monotone-chain: scan every point, without first dropping the points "

@@ -10,15 +10,12 @@ void declare_linsolve_options(CLI::App& cmd, Linsolve_options& o) {
   cmd.add_option("--hilbert", o.hilbert, "the N x N Hilbert system (b = H * ones) in double, instead of a file")
       ->check(CLI::Range(1, 500))
       ->type_name("N");
-  cmd.add_option("--method", o.method, "none, partial, complete, eigen-partial, eigen-full")
-      ->type_name("METHOD")
-      ->default_str("partial");
-  cmd.add_option("--scalar", o.scalar, "the arithmetic: float, double, long-double, mpfr-BITS, rational")
-      ->type_name("SCALAR")
-      ->default_str("double");
-  cmd.add_option("--exact-limit", o.exact_limit, "compute the exact solution (forward error) for n <= this")
-      ->type_name("N")
-      ->default_str("100");
+  add_value_option(cmd, "--method", o.method, "none, partial, complete, eigen-partial, eigen-full", "METHOD",
+                   "partial");
+  add_value_option(cmd, "--scalar", o.scalar, "the arithmetic: float, double, long-double, mpfr-BITS, rational",
+                   "SCALAR", "double");
+  add_value_option(cmd, "--exact-limit", o.exact_limit, "compute the exact solution (forward error) for n <= this", "N",
+                   "100");
   add_format_option(cmd, o.format);
 }
 

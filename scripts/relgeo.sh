@@ -92,6 +92,26 @@ run_experiment() {
   log "results in $out"
 }
 
+# Runs "$1 ARG" for each further ARG, $jobs at a time (the machine's cores);
+# fails when any run failed. Every run still runs to its end.
+run_parallel() {
+  local f=$1 running=0 failed=0 arg
+  shift
+  for arg in "$@"; do
+    if ((running >= jobs)); then
+      wait -n || failed=1
+      running=$((running - 1))
+    fi
+    "$f" "$arg" &
+    running=$((running + 1))
+  done
+  while ((running > 0)); do
+    wait -n || failed=1
+    running=$((running - 1))
+  done
+  return "$failed"
+}
+
 # The library's own unit suites under AddressSanitizer and UBSan: those
 # marked SANITIZED in test/ (relgeo_add_test), built by the target
 # relgeo_sanitized_suites, listed in sanitized_suites.txt of the build.
@@ -117,7 +137,7 @@ run_sanitized_tests() {
   # $jobs suites at a time, each log kept until it is done; a twentieth of the
   # soundness inputs: the sanitizers check memory and UB, the full-size run
   # checks the figures.
-  local logs failed=0 bin
+  local logs failed=0
   logs=$(mktemp -d)
   run_one_sanitized() {
     local bin=$1 out=$logs/${1##*/}.log
@@ -131,19 +151,7 @@ run_sanitized_tests() {
       return 1
     fi
   }
-  local running=0
-  for bin in "${suites[@]}"; do
-    if ((running >= jobs)); then
-      wait -n || failed=1
-      running=$((running - 1))
-    fi
-    run_one_sanitized "$bin" &
-    running=$((running + 1))
-  done
-  while ((running > 0)); do
-    wait -n || failed=1
-    running=$((running - 1))
-  done
+  run_parallel run_one_sanitized "${suites[@]}" || failed=1
   rm -rf "$logs"
   ((failed == 0)) || { log "sanitized tests failed"; exit 1; }
   log "sanitized tests passed: ${#suites[@]} suites"
@@ -180,7 +188,7 @@ fuzz_harnesses() {
 
 # The corpus replay (CTest: every seed and kept finding once, no mutation),
 # then a short run of every harness from its seeds (a copy: the seeds stay as
-# they are): about 60 s in all. Any crash, hang or sanitizer report fails.
+# they are): about 60 s of fuzzing in all, two harnesses at a time on two cores. Any crash, hang or sanitizer report fails.
 # Harnesses to leave out of the smoke (a known finding whose fix is not
 # merged yet would be found again within seconds); empty: every harness runs.
 fuzz_smoke_skip=()
@@ -188,15 +196,17 @@ fuzz_smoke_skip=()
 run_fuzz_smoke() {
   build_fuzzers
   (cd "$fuzz_build" && ctest --output-on-failure -j "$jobs" -L fuzz) || { log "fuzz corpus replay failed"; exit 1; }
-  local harnesses tmp failed=0
-  mapfile -t harnesses < <(fuzz_harnesses)
-  ((${#harnesses[@]} > 0)) || { log "error: no fuzz harness built"; exit 1; }
-  local each=$(( (60 + ${#harnesses[@]} - 1) / ${#harnesses[@]} ))
+  local all=() harnesses=() tmp failed=0 h
+  mapfile -t all < <(fuzz_harnesses)
+  ((${#all[@]} > 0)) || { log "error: no fuzz harness built"; exit 1; }
+  for h in "${all[@]}"; do
+    if [[ " ${fuzz_smoke_skip[*]} " == *" $h "* ]]; then log "fuzz smoke: $h skipped (fuzz_smoke_skip)"; else harnesses+=("$h"); fi
+  done
+  # About 60 s of fuzzing in all, $jobs harnesses at a time.
+  local each=$(( (60 + ${#all[@]} - 1) / ${#all[@]} ))
   tmp=$(mktemp -d)
-  for h in "${harnesses[@]}"; do
-    if [[ " ${fuzz_smoke_skip[*]} " == *" $h "* ]]; then
-      log "fuzz smoke: $h skipped (fuzz_smoke_skip)"; continue
-    fi
+  fuzz_one() {
+    local h=$1
     mkdir -p "$tmp/$h"
     cp "$root/fuzz/corpus/$h"/* "$tmp/$h/"
     # A fixed seed: the smoke explores the same way in every run (CI stays
@@ -205,11 +215,12 @@ run_fuzz_smoke() {
          -artifact_prefix="$tmp/$h-" "$tmp/$h" >"$tmp/$h.log" 2>&1; then
       log "fuzz smoke: $h ($each s): $(grep -o 'Done [0-9]* runs' "$tmp/$h.log" | tail -n 1)"
     else
-      failed=1
       log "fuzz smoke: $h FAILED; log:"
       grep -E -A 30 'relgeo fuzz|ERROR|SUMMARY' "$tmp/$h.log" | head -n 60 >&2 || tail -n 40 "$tmp/$h.log" >&2
+      return 1
     fi
-  done
+  }
+  run_parallel fuzz_one "${harnesses[@]}" || failed=1
   rm -rf "$tmp"
   ((failed == 0)) || { log "fuzz smoke failed"; exit 1; }
   log "fuzz smoke passed: ${#harnesses[@]} harnesses"

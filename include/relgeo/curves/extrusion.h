@@ -82,6 +82,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -293,14 +294,21 @@ inline Extrusion_verdict decide(double margin_lower, double margin_upper, double
   return Extrusion_verdict::uncertain;
 }
 
+/// The hull algorithm of a check, behind one type per kernel: the check is
+/// compiled once per kernel, not once per (kernel, algorithm) pair (a call
+/// through it costs nothing next to a hull).
+template <OrientationKernel_2 K>
+using Hull_function =
+    std::function<Hull_result<typename K::Point_2>(std::span<const typename K::Point_2>, const K&)>;
+
 /// The steps of check_extrusion, sharing the contour, the options, the
 /// kernel and hull algorithm, and the report being filled: one member per
 /// condition, and the bookkeeping of each hull problem.
-template <OrientationKernel_2 K, class Algorithm>
+template <OrientationKernel_2 K>
 class Extrusion_check {
  public:
   Extrusion_check(const Bezier_contour& contour, const Extrusion_options& options, const K& k,
-                  const Algorithm& hull)
+                  const Hull_function<K>& hull)
       : contour_(contour), options_(options), k_(k), hull_(hull), M_(contour.size()),
         rho2_(mul_up(2.0, options.rotation_error)) {  // a difference or a pair moves by 2 rho
     rep_.curves = M_;
@@ -506,7 +514,7 @@ class Extrusion_check {
   const Bezier_contour& contour_;
   const Extrusion_options& options_;
   const K& k_;
-  const Algorithm& hull_;
+  const Hull_function<K>& hull_;
   const std::size_t M_;
   const double rho2_;
   Extrusion_report rep_;
@@ -517,6 +525,25 @@ class Extrusion_check {
   std::vector<double> eps_max_;
   std::vector<Box> boxes_;
 };
+
+/// check_extrusion for one kernel, whatever the hull algorithm.
+template <OrientationKernel_2 K>
+Extrusion_report check_extrusion_with(const Bezier_contour& contour, const Extrusion_options& options, const K& k,
+                                      const Hull_function<K>& hull) {
+  // Margins are rounded in hardware: whatever the caller's environment, in
+  // round to nearest without FTZ/DAZ (the same for every kernel: a naive one
+  // can only downgrade the verdict, never make it depend on the caller).
+  const Default_fp_environment environment;
+  const double delta = options.relative_uncertainty, delta_abs = options.absolute_uncertainty;
+  if (!(delta >= 0) || !std::isfinite(delta) || !(delta_abs >= 0) || !std::isfinite(delta_abs) ||
+      !(options.rotation_error >= 0))
+    throw Invalid_input("extrusion: uncertainties must be finite and nonnegative");
+  Extrusion_check<K> check(contour, options, k, hull);
+  check.no_self_intersection();
+  check.adjacent_curves();
+  check.disjoint_curves();
+  return std::move(check).report();
+}
 
 }  // namespace internal
 
@@ -537,19 +564,7 @@ class Extrusion_check {
 template <OrientationKernel_2 K, class Algorithm = Graham_fortune_hull>
 Extrusion_report check_extrusion(const Bezier_contour& contour, const Extrusion_options& options = {},
                                  const K& k = K{}, const Algorithm& hull = Algorithm{}) {
-  // Margins are rounded in hardware: whatever the caller's environment, in
-  // round to nearest without FTZ/DAZ (the same for every kernel: a naive one
-  // can only downgrade the verdict, never make it depend on the caller).
-  const Default_fp_environment environment;
-  const double delta = options.relative_uncertainty, delta_abs = options.absolute_uncertainty;
-  if (!(delta >= 0) || !std::isfinite(delta) || !(delta_abs >= 0) || !std::isfinite(delta_abs) ||
-      !(options.rotation_error >= 0))
-    throw Invalid_input("extrusion: uncertainties must be finite and nonnegative");
-  internal::Extrusion_check<K, Algorithm> check(contour, options, k, hull);
-  check.no_self_intersection();
-  check.adjacent_curves();
-  check.disjoint_curves();
-  return std::move(check).report();
+  return internal::check_extrusion_with<K>(contour, options, k, internal::Hull_function<K>(std::cref(hull)));
 }
 
 }  // namespace relgeo

@@ -188,7 +188,8 @@ fuzz_harnesses() {
 
 # The corpus replay (CTest: every seed and kept finding once, no mutation),
 # then a short run of every harness from its seeds (a copy: the seeds stay as
-# they are): about 60 s of fuzzing in all, two harnesses at a time on two cores. Any crash, hang or sanitizer report fails.
+# they are): about 60 s of fuzzing in all, $jobs harnesses at a time. Any
+# crash, hang or sanitizer report fails.
 # Harnesses to leave out of the smoke (a known finding whose fix is not
 # merged yet would be found again within seconds); empty: every harness runs.
 fuzz_smoke_skip=()

@@ -252,8 +252,15 @@ struct Computed_hull {
   double backward = 0;                    ///< +inf when unusable
 };
 
-template <OrientationKernel_2 K, class Algorithm>
-Computed_hull run_hull(std::span<const Point_2<double>> pts, const K& k, const Algorithm& algorithm,
+/// The hull algorithm of a check, behind one type per kernel: the check is
+/// compiled once per kernel, not once per (kernel, algorithm) pair (a call
+/// through it costs nothing next to a hull).
+template <OrientationKernel_2 K>
+using Hull_function =
+    std::function<Hull_result<typename K::Point_2>(std::span<const typename K::Point_2>, const K&)>;
+
+template <OrientationKernel_2 K>
+Computed_hull run_hull(std::span<const Point_2<double>> pts, const K& k, const Hull_function<K>& algorithm,
                        Extrusion_report& rep) {
   using P = typename K::Point_2;
   const auto construct = k.construct_point_2_object();
@@ -293,13 +300,6 @@ inline Extrusion_verdict decide(double margin_lower, double margin_upper, double
   if (margin_upper <= data_error) return Extrusion_verdict::refused;
   return Extrusion_verdict::uncertain;
 }
-
-/// The hull algorithm of a check, behind one type per kernel: the check is
-/// compiled once per kernel, not once per (kernel, algorithm) pair (a call
-/// through it costs nothing next to a hull).
-template <OrientationKernel_2 K>
-using Hull_function =
-    std::function<Hull_result<typename K::Point_2>(std::span<const typename K::Point_2>, const K&)>;
 
 /// The steps of check_extrusion, sharing the contour, the options, the
 /// kernel and hull algorithm, and the report being filled: one member per

@@ -9,20 +9,18 @@ endif()
 if(NOT EXISTS ${WORK_DIR}/prefix/include/relgeo/kernel.h)
   message(FATAL_ERROR "headers were not installed")
 endif()
-# The client compiles through relgeo's own ccache, when it has one: its six
-# programs cost about two minutes of CPU cold, the Booleans and the joiner most.
-file(STRINGS ${BUILD_DIR}/CMakeCache.txt ccache REGEX "^RELGEO_CCACHE:[A-Z]+=.*ccache$")
-string(REGEX REPLACE "^[^=]*=" "" ccache "${ccache}")
-if(ccache)
-  set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${ccache})
+# The client uses two settings of relgeo's build (its cache):
+# - its ccache, when it has one: the six programs cost about a minute of CPU
+#   cold, the Booleans most;
+# - RELGEO_UNTIMED_OPTIMIZATION, when set: the check is about the package
+#   (targets, headers, libraries), not the programs' speed, as for relgeo's own
+#   untimed code.
+load_cache(${BUILD_DIR} READ_WITH_PREFIX relgeo_ RELGEO_CCACHE RELGEO_UNTIMED_OPTIMIZATION)
+if(relgeo_RELGEO_CCACHE)
+  set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${relgeo_RELGEO_CCACHE})
 endif()
-# The check is about the package (its targets, headers, libraries), not the
-# programs' speed: the client compiles at relgeo's RELGEO_UNTIMED_OPTIMIZATION
-# when that is set, as relgeo's own untimed code does.
-file(STRINGS ${BUILD_DIR}/CMakeCache.txt untimed REGEX "^RELGEO_UNTIMED_OPTIMIZATION:[A-Z]+=.+")
-string(REGEX REPLACE "^[^=]*=" "" untimed "${untimed}")
-if(untimed)
-  set(release_flags "-DCMAKE_CXX_FLAGS_RELEASE=${untimed} -DNDEBUG")
+if(relgeo_RELGEO_UNTIMED_OPTIMIZATION)
+  set(release_flags "-DCMAKE_CXX_FLAGS_RELEASE=${relgeo_RELGEO_UNTIMED_OPTIMIZATION} -DNDEBUG")
 endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/client -B ${WORK_DIR}/client
                         -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release ${launcher} ${release_flags}

@@ -3,6 +3,7 @@
 #   cmake -DTOOL=... -DDIR=testdata/csg -DPREFIX=drilled_sphere -DOPS=difference@@... -DOUT=dir -P check_tool_chain.cmake
 # Operand i+1 is DIR/PREFIX_<i+1>.off, the first DIR/PREFIX_00.off. Fails unless
 # every step exits 0 with a valid solid.
+include(${CMAKE_CURRENT_LIST_DIR}/check_tool_common.cmake)
 string(REPLACE "@@" ";" OPS "${OPS}")
 file(MAKE_DIRECTORY "${OUT}")
 set(current "${DIR}/${PREFIX}_00.off")
@@ -17,12 +18,8 @@ foreach(op IN LISTS OPS)
   set(result "${OUT}/${PREFIX}_step${step}.off")
   execute_process(COMMAND "${TOOL}" boolean "${current}" "${next}" --op ${op} --output "${result}"
     RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code STREQUAL "0")
-    message(FATAL_ERROR "step ${step} (${op}): exit code ${code}\nstdout:\n${out}\nstderr:\n${err}")
-  endif()
-  if(NOT out MATCHES "validation +valid solid")
-    message(FATAL_ERROR "step ${step} (${op}): not a valid solid\nstdout:\n${out}")
-  endif()
+  expect_exit_code("step ${step} (${op})" "${code}" 0 "${out}" "${err}")
+  expect_matches("step ${step} (${op})" stdout "${out}" "validation +valid solid")
   set(current "${result}")
 endforeach()
 message(STATUS "${PREFIX}: ${step} steps, every result a valid solid")

@@ -10,6 +10,7 @@
 # exactly one line starting with "relgeo: error: ". STDIN: a file fed to the
 # tool's standard input; WORKDIR: the folder it runs in (created). Lists are
 # joined with "@@".
+include(${CMAKE_CURRENT_LIST_DIR}/check_tool_common.cmake)
 foreach(v ARGS STDOUT_MATCHES STDOUT_REJECTS STDERR_MATCHES FILES JSON_FILES)
   string(REPLACE "@@" ";" ${v} "${${v}}")
 endforeach()
@@ -29,23 +30,10 @@ if(WORKDIR)
 endif()
 execute_process(COMMAND "${TOOL}" ${ARGS} ${_stdin} ${_workdir}
   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT code STREQUAL "${EXPECT_CODE}")
-  message(FATAL_ERROR "relgeo ${ARGS}: exit code ${code}, expected ${EXPECT_CODE}\nstdout:\n${out}\nstderr:\n${err}")
-endif()
-# Every regex of `regexes` must match `text` (the stream `stream`), or, with
-# REJECT, none may.
-function(expect_matches stream text regexes)
-  foreach(re IN LISTS regexes)
-    if(ARGN STREQUAL "REJECT" AND text MATCHES "${re}")
-      message(FATAL_ERROR "relgeo ${ARGS}: ${stream} matches '${re}', which it must not\n${stream}:\n${text}")
-    elseif(NOT ARGN STREQUAL "REJECT" AND NOT text MATCHES "${re}")
-      message(FATAL_ERROR "relgeo ${ARGS}: ${stream} does not match '${re}'\n${stream}:\n${text}")
-    endif()
-  endforeach()
-endfunction()
-expect_matches(stdout "${out}" "${STDOUT_MATCHES}")
-expect_matches(stdout "${out}" "${STDOUT_REJECTS}" REJECT)
-expect_matches(stderr "${err}" "${STDERR_MATCHES}")
+expect_exit_code("relgeo ${ARGS}" "${code}" "${EXPECT_CODE}" "${out}" "${err}")
+expect_matches("relgeo ${ARGS}" stdout "${out}" "${STDOUT_MATCHES}")
+expect_matches("relgeo ${ARGS}" stdout "${out}" "${STDOUT_REJECTS}" REJECT)
+expect_matches("relgeo ${ARGS}" stderr "${err}" "${STDERR_MATCHES}")
 if(EXPECT_CODE EQUAL 2)
   if(NOT err MATCHES "^relgeo: error: [^\n]*\n$")
     message(FATAL_ERROR "relgeo ${ARGS}: stderr is not one 'relgeo: error:' line:\n${err}")

@@ -56,35 +56,30 @@ relgeo_tool_test(join_criterion_exceeded 1 STDOUT_JSON
   STDOUT_MATCHES "\"max_normal_error\": 1e-06" "\"status\": \"failed\"," "\"failure\": \"normal-vector-error\""
   STDERR_MATCHES "normal-vector-error")
 # Bad input: one typed error each (exit 2, one line on stderr).
-relgeo_tool_test(join_missing_mesh 2
-  ARGS join ${_jd}/join_folding.json --mesh ${_jd}/join_folding_0.off --mesh ${_jd}/no_such_mesh.off
-       --output ${_tmp}/join/x.off
-  STDERR_MATCHES "no_such_mesh.off")
-relgeo_tool_test(join_missing_surface 2
-  ARGS join ${_jd}/no_such_model.json --mesh ${_jd}/join_folding_0.off --output ${_tmp}/join/x.off
-  STDERR_MATCHES "cannot read surface file .*no_such_model.json.*: no such file")
-relgeo_tool_test(join_unreadable_surface 2
-  ARGS join ${_jd}/join_not_json.json --mesh ${_jd}/join_folding_0.off --output ${_tmp}/join/x.off
-  STDERR_MATCHES "join_not_json.json line 1: not JSON")
-relgeo_tool_test(join_mesh_does_not_project 2
-  ARGS join ${_jd}/join_folding.json --mesh ${_jd}/join_folding_far.off --mesh ${_jd}/join_folding_1.off
-       --output ${_tmp}/join/x.off
-  STDERR_MATCHES "a mesh does not project onto its face \\(outside_domain\\)")
-relgeo_tool_test(join_meshes_do_not_fit 2
-  ARGS join ${_jd}/join_folding.json --mesh ${_jd}/join_folding_0.off --output ${_tmp}/join/x.off
-  STDERR_MATCHES "the meshes do not fit the surface model")
+# relgeo_join_bad_input(NAME STDERR_REGEX JOIN_ARGS...): tool_NAME runs
+# `relgeo join JOIN_ARGS... --output <tmp>/join/x.off`, which must fail with
+# exit 2 and an error line matching STDERR_REGEX ("": any error line).
+function(relgeo_join_bad_input name stderr_regex)
+  relgeo_tool_test(${name} 2 ARGS join ${ARGN} --output ${_tmp}/join/x.off STDERR_MATCHES "${stderr_regex}")
+endfunction()
+relgeo_join_bad_input(join_missing_mesh "no_such_mesh.off"
+  ${_jd}/join_folding.json --mesh ${_jd}/join_folding_0.off --mesh ${_jd}/no_such_mesh.off)
+relgeo_join_bad_input(join_missing_surface "cannot read surface file .*no_such_model.json.*: no such file"
+  ${_jd}/no_such_model.json --mesh ${_jd}/join_folding_0.off)
+relgeo_join_bad_input(join_unreadable_surface "join_not_json.json line 1: not JSON"
+  ${_jd}/join_not_json.json --mesh ${_jd}/join_folding_0.off)
+relgeo_join_bad_input(join_mesh_does_not_project "a mesh does not project onto its face \\(outside_domain\\)"
+  ${_jd}/join_folding.json --mesh ${_jd}/join_folding_far.off --mesh ${_jd}/join_folding_1.off)
+relgeo_join_bad_input(join_meshes_do_not_fit "the meshes do not fit the surface model"
+  ${_jd}/join_folding.json --mesh ${_jd}/join_folding_0.off)
 relgeo_tool_test(join_no_mesh 2 ARGS join ${_jd}/join_folding.json STDERR_MATCHES "no mesh")
 relgeo_tool_test(join_no_surface 2 ARGS join --mesh ${_jd}/join_folding_0.off STDERR_MATCHES "no surface file")
-relgeo_tool_test(join_bad_layers 2 ARGS join ${_fold} --layers 0 --output ${_tmp}/join/x.off STDERR_MATCHES "--layers")
-relgeo_tool_test(join_bad_min_angle 2 ARGS join ${_fold} --min-angle 45 --output ${_tmp}/join/x.off
-  STDERR_MATCHES "--min-angle")
-relgeo_tool_test(join_bad_criterion 2 ARGS join ${_fold} --max-absolute-error -1 --output ${_tmp}/join/x.off
-  STDERR_MATCHES "--max-absolute-error")
-relgeo_tool_test(join_bad_method 2 ARGS join ${_fold} --method glue --output ${_tmp}/join/x.off
-  STDERR_MATCHES "--method")
-relgeo_tool_test(join_kernel_not_certified 2 ARGS join ${_fold} --kernel double --output ${_tmp}/join/x.off
-  STDERR_MATCHES "not supported by join")
-relgeo_tool_test(join_unknown_kernel 2 ARGS join ${_fold} --kernel quadruple --output ${_tmp}/join/x.off)
+relgeo_join_bad_input(join_bad_layers "--layers" ${_fold} --layers 0)
+relgeo_join_bad_input(join_bad_min_angle "--min-angle" ${_fold} --min-angle 45)
+relgeo_join_bad_input(join_bad_criterion "--max-absolute-error" ${_fold} --max-absolute-error -1)
+relgeo_join_bad_input(join_bad_method "--method" ${_fold} --method glue)
+relgeo_join_bad_input(join_kernel_not_certified "not supported by join" ${_fold} --kernel double)
+relgeo_join_bad_input(join_unknown_kernel "" ${_fold} --kernel quadruple)
 
 relgeo_tool_test(experiment_quick_joining 0
   ARGS experiment --quick --quiet --only joining --output ${_tmp}/results_joining

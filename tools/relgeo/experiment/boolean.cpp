@@ -113,30 +113,25 @@ Json run_json(const Boolean_case& c, const std::string& kernel, const Boolean_ru
               const Oracle_comparison& oracle) {
   const Solid_report& v = run.validation;
   const double rel = r.relative_volume_error;
-  Json j;
-  j["case"] = c.name;
-  j["operation"] = std::string(to_string(c.op));
-  j["kernel"] = kernel;
-  j["kernel_model"] = run.kernel_model;
-  j["status"] = r.status;
-  j["certified"] = run.certified;
-  j["faces"] = run.mesh.faces.size();
-  j["valid"] = r.valid;
-  j["valid_before_rounding"] = r.valid_exact;
-  j["validation"] = run.ok() || r.rounding_failed ? Json(run.validation.summary()) : Json(nullptr);
-  j["rounding"] = rounding_repair_json(run.rounding, run.rounding_method);
-  j["rounded_self_intersecting_pairs"] = r.crossings;
-  j["exact_self_intersecting_pairs"] =
-      run.exact_self_intersecting_pairs ? Json(*run.exact_self_intersecting_pairs) : Json(nullptr);
-  j["volume"] = v.volume.value;
-  j["oracle_volume"] = oracle.cgal_ok ? Json(oracle.cgal_volume) : Json(nullptr);
-  j["relative_volume_error"] = std::isnan(rel) ? Json(nullptr) : Json(rel);
-  j["euler_characteristic"] = v.euler_characteristic ? Json(*v.euler_characteristic) : Json(nullptr);
-  j["time_s"] = {{"check", run.time.check},           {"broad_phase", run.time.broad_phase},
-                 {"narrow_phase", run.time.narrow_phase}, {"retriangulation", run.time.retriangulation},
-                 {"labelling", run.time.labelling},   {"assembly", run.time.assembly},
-                 {"rounding", run.time.rounding}};
-  return j;
+  return Json{{"case", c.name},
+              {"operation", std::string(to_string(c.op))},
+              {"kernel", kernel},
+              {"kernel_model", run.kernel_model},
+              {"status", r.status},
+              {"certified", run.certified},
+              {"faces", run.mesh.faces.size()},
+              {"valid", r.valid},
+              {"valid_before_rounding", r.valid_exact},
+              {"validation", run.ok() || r.rounding_failed ? Json(run.validation.summary()) : Json(nullptr)},
+              {"rounding", rounding_repair_json(run.rounding, run.rounding_method)},
+              {"rounded_self_intersecting_pairs", r.crossings},
+              {"exact_self_intersecting_pairs",
+               run.exact_self_intersecting_pairs ? Json(*run.exact_self_intersecting_pairs) : Json(nullptr)},
+              {"volume", v.volume.value},
+              {"oracle_volume", oracle.cgal_ok ? Json(oracle.cgal_volume) : Json(nullptr)},
+              {"relative_volume_error", std::isnan(rel) ? Json(nullptr) : Json(rel)},
+              {"euler_characteristic", v.euler_characteristic ? Json(*v.euler_characteristic) : Json(nullptr)},
+              {"time_s", boolean_timing_json(run.time)}};
 }
 
 /// A note listing `items` under `title` (none when the list is empty).

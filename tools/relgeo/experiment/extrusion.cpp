@@ -148,21 +148,19 @@ void gallery_part(const Experiment_context& ctx, const std::vector<Case>& galler
 
 Json kernel_run_json(const Case& c, const std::string& kernel, const std::string& algorithm, const Extrusion_report& r,
                      double time_s) {
-  Json j;
-  j["contour"] = c.name;
-  j["kernel"] = kernel;
-  j["algorithm"] = algorithm;
-  j["verdict"] = to_string(r.verdict);
-  j["min_margins"] = Json::array({io::json_measure(r.conditions[0].min_margin),
-                                  io::json_measure(r.conditions[1].min_margin),
-                                  io::json_measure(r.conditions[2].min_margin)});
-  j["offending_total"] = r.offending_total;
-  j["uncertain_answers"] = r.uncertain_answers;
-  j["non_convex_hulls"] = r.non_convex_hulls;
-  j["hull_failures"] = r.hull_failures;
-  j["max_hull_backward_error"] = io::json_measure(r.max_hull_backward_error);
-  j["time_s"] = time_s;
-  return j;
+  return Json{{"contour", c.name},
+              {"kernel", kernel},
+              {"algorithm", algorithm},
+              {"verdict", to_string(r.verdict)},
+              {"min_margins",
+               Json::array({io::json_measure(r.conditions[0].min_margin), io::json_measure(r.conditions[1].min_margin),
+                            io::json_measure(r.conditions[2].min_margin)})},
+              {"offending_total", r.offending_total},
+              {"uncertain_answers", r.uncertain_answers},
+              {"non_convex_hulls", r.non_convex_hulls},
+              {"hull_failures", r.hull_failures},
+              {"max_hull_backward_error", io::json_measure(r.max_hull_backward_error)},
+              {"time_s", time_s}};
 }
 
 /// (2) Every kernel and hull algorithm on a good and on bad contours.

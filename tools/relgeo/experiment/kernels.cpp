@@ -68,11 +68,7 @@ void run_grids(const Experiment_context& ctx, const std::vector<Kernel_entry>& k
       std::vector<std::string> row = {k.label(), k.certified ? "yes" : "no"};
       for (auto& c : tally_cells(t, k.certified)) row.push_back(std::move(c));
       tab.add_row(std::move(row));
-      Json r;
-      r["triple"] = triple.name;
-      r["kernel"] = k.label();
-      r["certified"] = k.certified;
-      r["size"] = g.size;
+      Json r{{"triple", triple.name}, {"kernel", k.label()}, {"certified", k.certified}, {"size", g.size}};
       add_tally_json(r, t, "cells");
       r["png"] = ctx.relative(png);
       records.push_back(std::move(r));
@@ -90,14 +86,11 @@ void run_grids(const Experiment_context& ctx, const std::vector<Kernel_entry>& k
     rep.add_gallery("Grid " + triple.name + " under every kernel (" + orientation_grid_legend + ")", std::move(pictures));
   }
   Json triples = Json::array();
-  for (const auto& t : analysis::kettner_grid_triples()) {
-    Json j;
-    j["name"] = t.name;
-    j["p"] = io::json_point(t.px, t.py);
-    j["q"] = io::json_point(t.qx, t.qy);
-    j["r"] = io::json_point(t.rx, t.ry);
-    triples.push_back(std::move(j));
-  }
+  for (const auto& t : analysis::kettner_grid_triples())
+    triples.push_back(Json{{"name", t.name},
+                           {"p", io::json_point(t.px, t.py)},
+                           {"q", io::json_point(t.qx, t.qy)},
+                           {"r", io::json_point(t.rx, t.ry)}});
   rep.json["grid_size"] = grid_size;
   rep.json["grid_triples"] = std::move(triples);
   rep.json["grids"] = std::move(records);
@@ -139,16 +132,15 @@ Workload_measurement measure_workload(const Experiment_context& ctx, const Kerne
   const std::size_t m = std::min(cases, workload.cases.size());
   const Workload_measurement r =
       measure(k.name, std::span<const Case>(workload.cases).first(m), exact.first(m), ctx.min_timing_seconds);
-  Json j;
-  j["predicate"] = predicate;
-  j["kernel"] = k.label();
-  j["certified"] = k.certified;
-  j["workload"] = workload.name;
-  j["subset"] = subset;  // true: only the first `cases` cases of the workload
+  Json j{{"predicate", predicate},
+         {"kernel", k.label()},
+         {"certified", k.certified},
+         {"workload", workload.name},
+         {"subset", subset}};  // true: only the first `cases` cases of the workload
   add_tally_json(j, r.tally, "cases");
-  j["uncertain_rate"] = r.tally.uncertain_rate();
-  j["ns_per_predicate"] = r.ns_per_predicate;
-  j["timed_evaluations"] = r.timed_evaluations;
+  j.update(Json{{"uncertain_rate", r.tally.uncertain_rate()},
+                {"ns_per_predicate", r.ns_per_predicate},
+                {"timed_evaluations", r.timed_evaluations}});
   records.push_back(std::move(j));
   if (k.certified && r.tally.wrong() > 0)
     rep.failures.push_back("soundness violation: certified kernel " + k.label() + " gave " +
@@ -231,15 +223,12 @@ Section_report kernels_section(const Experiment_context& ctx) {
   Section_report rep;
   const std::vector<Kernel_entry>& kernels = kernel_registry();
   Json kernel_list = Json::array();
-  for (const auto& k : kernels) {
-    Json j;
-    j["name"] = k.label();
-    j["model"] = k.name;
-    j["certified"] = k.certified;
-    j["exact_predicates"] = k.exact_predicates;
-    j["slow"] = k.slow;
-    kernel_list.push_back(std::move(j));
-  }
+  for (const auto& k : kernels)
+    kernel_list.push_back(Json{{"name", k.label()},
+                               {"model", k.name},
+                               {"certified", k.certified},
+                               {"exact_predicates", k.exact_predicates},
+                               {"slow", k.slow}});
   rep.json["kernels"] = std::move(kernel_list);
   rep.json["slow_kernel_cases"] = std::min(ctx.workload_size, ctx.slow_kernel_cases);
 

@@ -30,15 +30,13 @@ using io::Json;
 Json measure(double v) { return io::json_measure(v); }
 std::string text(double v, int digits = 3) { return measure_text(v, digits); }
 Json run_json(const Linear_run& r) {
-  Json j;
-  j["method"] = r.method;
-  j["scalar"] = r.scalar;
-  j["normwise_backward_error"] = measure(r.errors.normwise_backward_error);
-  j["componentwise_backward_error"] = measure(r.errors.componentwise_backward_error);
-  j["forward_error"] = r.errors.forward_error ? measure(*r.errors.forward_error) : Json(nullptr);
-  j["growth_factor"] = r.growth_factor ? measure(*r.growth_factor) : Json(nullptr);
-  j["time_s"] = r.time_s;
-  return j;
+  return Json{{"method", r.method},
+              {"scalar", r.scalar},
+              {"normwise_backward_error", measure(r.errors.normwise_backward_error)},
+              {"componentwise_backward_error", measure(r.errors.componentwise_backward_error)},
+              {"forward_error", r.errors.forward_error ? measure(*r.errors.forward_error) : Json(nullptr)},
+              {"growth_factor", r.growth_factor ? measure(*r.growth_factor) : Json(nullptr)},
+              {"time_s", r.time_s}};
 }
 
 /// A pivoting method in double must have a backward error <= 10 n u; a
@@ -102,9 +100,6 @@ void hilbert_double_part(const Experiment_context& ctx, Section_report& rep) {
     const Linear_reference ref(s.a, s.b);
     std::vector<std::string> row = {std::to_string(n), text(ref.condition().value)};
     std::vector<std::string> fwd;
-    Json j;
-    j["n"] = n;
-    j["condition_number"] = ref.condition().value;
     Json runs = Json::array();
     double eta_partial = 0, omega_partial = 0;
     for (const auto& m : linear_method_names()) {
@@ -123,8 +118,7 @@ void hilbert_double_part(const Experiment_context& ctx, Section_report& rep) {
     row.insert(row.end(), fwd.begin(), fwd.end());
     row.push_back(text(2 * ref.condition().value * eta_partial));
     t.add_row(row);
-    j["runs"] = runs;
-    rows.push_back(j);
+    rows.push_back(Json{{"n", n}, {"condition_number", ref.condition().value}, {"runs", runs}});
   }
   rep.add_part("Hilbert matrices H_n and b = H_n * ones, stored in double (measures against the stored system's "
                "exact solution).\nStable methods: backward error at the level of u = 1.1e-16 for every n, forward "
@@ -160,9 +154,6 @@ void precision_needed_part(const Experiment_context& ctx, Section_report& rep) {
     const Linear_reference ref(h.a, h.b);
     const std::vector<std::pair<int, double>> fwd = precision_sweep(ref);
     std::vector<std::string> row = {std::to_string(n), text(ref.condition().value), format_fixed(std::log2(ref.condition().value), 1)};
-    Json j;
-    j["n"] = n;
-    j["condition_number"] = ref.condition().value;
     Json needed = Json::object();
     for (double target : targets) {
       int found = -1;
@@ -181,10 +172,9 @@ void precision_needed_part(const Experiment_context& ctx, Section_report& rep) {
       sweep.push_back({{"bits", bits}, {"forward_error", measure(f)}});
     }
     row.push_back(text(at53));
-    j["bits_needed"] = needed;
-    j["sweep"] = sweep;
     t.add_row(row);
-    rows.push_back(j);
+    rows.push_back(
+        Json{{"n", n}, {"condition_number", ref.condition().value}, {"bits_needed", needed}, {"sweep", sweep}});
   }
   rep.add_part("Precision needed: the exact Hilbert system H_n x = H_n * ones (x = ones), data correctly rounded "
                "to MPFR at BITS,\npartial pivoting; the smallest BITS of the sweep (" +
@@ -217,9 +207,8 @@ void random_systems_part(const Experiment_context& ctx, Section_report& rep) {
                  r.errors.forward_error ? text(*r.errors.forward_error) : "-", format_g(r.time_s * 1e6, 3) + " us",
                  format_fixed(r.time_s / eigen_time, 2)});
       Json j = run_json(r);
-      j["n"] = n;
-      j["condition_number"] = ref.condition().value;
-      j["condition_number_exact"] = ref.condition().exact;
+      j.update(Json{
+          {"n", n}, {"condition_number", ref.condition().value}, {"condition_number_exact", ref.condition().exact}});
       rows.push_back(j);
       check_backward_error(rep, "random", n, r);
     }

@@ -100,21 +100,19 @@ bool feasible(const Experiment_context& ctx, const std::string& mesh, const std:
 
 Json run_json(const std::string& name, unsigned level, const std::string& kernel, const Subdivision_result& r,
               const Json& bounds) {
-  Json j;
-  j["mesh"] = name;
-  j["level"] = level;
-  j["kernel"] = kernel;
-  j["kernel_model"] = r.kernel_model;
-  j["faces"] = r.refined.faces.size();
-  j["samples"] = r.samples;
-  j["refined_distance"] = r.refined_distance;
-  j["limit_distance"] = r.limit_distance;
-  j["limit_normal_offset"] = r.limit_normal_offset;
-  j["rounding"] = r.rounding;
-  j["mesh_size"] = r.mesh_size;
-  j["bounds"] = bounds;
-  j["time_s"] = {{"subdivision", r.time_subdivision}, {"bounds", r.time_bounds}};
-  return j;
+  return Json{{"mesh", name},
+              {"level", level},
+              {"kernel", kernel},
+              {"kernel_model", r.kernel_model},
+              {"faces", r.refined.faces.size()},
+              {"samples", r.samples},
+              {"refined_distance", r.refined_distance},
+              {"limit_distance", r.limit_distance},
+              {"limit_normal_offset", r.limit_normal_offset},
+              {"rounding", r.rounding},
+              {"mesh_size", r.mesh_size},
+              {"bounds", bounds},
+              {"time_s", {{"subdivision", r.time_subdivision}, {"bounds", r.time_bounds}}}};
 }
 
 /// The section's runs: every mesh, level and feasible kernel, into one table,

@@ -68,12 +68,6 @@ std::vector<Solid_pair_case> solid_pair_cases() {
 std::string g3(double v) { return std::isnan(v) ? "-" : measure_text(v, 3); }
 std::string ms(double seconds) { return format_fixed(1e3 * seconds, 2); }
 
-Json timing_json(const Subdivision_boolean_timing& t) {
-  return {{"limit_meshes", t.limit_meshes}, {"boolean", t.boolean},   {"mapping", t.mapping},
-          {"fitting", t.fitting},           {"distance", t.distance}, {"validation", t.validation},
-          {"layer", t.layer()},             {"total", t.total()}};
-}
-
 // Level 0: the Boolean of the control meshes themselves.
 Json control_boolean_row(const Solid_pair_case& c, const std::string& kernel, Text_table& t) {
   Boolean_run run;
@@ -88,39 +82,32 @@ Json control_boolean_row(const Solid_pair_case& c, const std::string& kernel, Te
   t.add_row({c.name, "0", kernel, status.substr(0, 40), run.ok() ? std::to_string(run.mesh.faces.size()) : "-",
              run.ok() ? std::to_string(run.mesh.tags.creases().size()) : "-", "-", "-", "-", "-",
              run.ok() ? run.validation.summary() : "-", ms(run.time.total()), "-", ms(run.time.total())});
-  Json j;
-  j["case"] = c.name;
-  j["level"] = 0;
-  j["kernel"] = kernel;
-  j["status"] = status;
-  j["faces"] = run.mesh.faces.size();
-  j["curve_edges"] = run.mesh.tags.creases().size();
-  j["polyhedral_validation"] = run.ok() ? io::solid_report_json(run.validation) : Json(nullptr);
-  j["time_s"] = {{"boolean", run.time.total()}};
-  return j;
+  return Json{{"case", c.name},
+              {"level", 0},
+              {"kernel", kernel},
+              {"status", status},
+              {"faces", run.mesh.faces.size()},
+              {"curve_edges", run.mesh.tags.creases().size()},
+              {"polyhedral_validation", run.ok() ? io::solid_report_json(run.validation) : Json(nullptr)},
+              {"time_s", {{"boolean", run.time.total()}}}};
 }
 
 Json level_json(const Solid_pair_case& c, unsigned level, const std::string& kernel, const Subdivision_boolean_run& run,
                 const std::string& status, double ratio) {
-  Json j;
-  j["case"] = c.name;
-  j["level"] = level;
-  j["kernel"] = kernel;
-  j["kernel_model"] = run.kernel_model;
-  j["status"] = status;
-  j["faces"] = run.control.faces.size();
-  j["counts"] = {{"curve_vertices", run.counts.curve_vertices},
-                 {"curve_edges", run.counts.curve_edges},
-                 {"bad_faces", {run.counts.bad_faces[0], run.counts.bad_faces[1]}},
-                 {"fitted_vertices", run.counts.fitted_vertices}};
-  j["distance"] = {{"subdivision_to_polyhedral", surface_distance_json(run.distance_to_polyhedral)},
-                   {"subdivision_to_polyhedral_fitted", surface_distance_json(run.distance_to_polyhedral_fitted)}};
-  j["fitted"] = run.fitted;
-  j["ratio_to_previous_level"] = io::json_measure(ratio);
-  j["validation"] = run.ok() ? subdivision_validation_json(run.validation) : Json(nullptr);
-  j["polyhedral_validation"] = run.polyhedral.ok() ? io::solid_report_json(run.polyhedral.validation) : Json(nullptr);
-  j["time_s"] = timing_json(run.time);
-  return j;
+  return Json{
+      {"case", c.name},
+      {"level", level},
+      {"kernel", kernel},
+      {"kernel_model", run.kernel_model},
+      {"status", status},
+      {"faces", run.control.faces.size()},
+      {"counts", subdivision_boolean_counts_json(run.counts)},
+      {"distance", subdivision_boolean_distance_json(run)},
+      {"fitted", run.fitted},
+      {"ratio_to_previous_level", io::json_measure(ratio)},
+      {"validation", run.ok() ? subdivision_validation_json(run.validation) : Json(nullptr)},
+      {"polyhedral_validation", run.polyhedral.ok() ? io::solid_report_json(run.polyhedral.validation) : Json(nullptr)},
+      {"time_s", subdivision_boolean_timing_json(run.time)}};
 }
 
 /// The section's runs: every case under every kernel at levels 0..max, into

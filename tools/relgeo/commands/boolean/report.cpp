@@ -29,6 +29,16 @@ io::Json rounding_repair_json(const Rounding_repair_report& r, const std::string
           {"remaining_degenerate_faces", r.remaining_degenerate_faces.size()}};
 }
 
+io::Json boolean_timing_json(const Boolean_timing& t) {
+  return {{"check", t.check},
+          {"broad_phase", t.broad_phase},
+          {"narrow_phase", t.narrow_phase},
+          {"retriangulation", t.retriangulation},
+          {"labelling", t.labelling},
+          {"assembly", t.assembly},
+          {"rounding", t.rounding}};
+}
+
 io::Json boolean_report_json(const Boolean_report_input& in) {
   const Boolean_run& r = *in.run;
   const double volume = r.validation.volume.value;
@@ -37,22 +47,27 @@ io::Json boolean_report_json(const Boolean_report_input& in) {
   io::Json pairs = io::Json::array();
   for (std::size_t i = 0; i < r.undecided_pairs.size() && i < 100; ++i)
     pairs.push_back({r.undecided_pairs[i].first, r.undecided_pairs[i].second});
-  j["undecided_pairs"] = pairs;
-  j["operands"] = {{"a", operand_json(in.input_a, *in.a)}, {"b", operand_json(in.input_b, *in.b)}};
-  j["output"] = {{"vertices", r.mesh.vertices.size()}, {"faces", r.mesh.faces.size()},
-                 {"creases", r.mesh.tags.creases().size()}};
-  j["validation"] = r.ok() ? io::solid_report_json(r.validation) : io::Json(nullptr);
-  j["exact_self_intersecting_pairs"] =
-      r.exact_self_intersecting_pairs ? io::Json(*r.exact_self_intersecting_pairs) : io::Json(nullptr);
-  j["rounding_error"] = io::json_measure(r.rounding_error);
-  j["rounding"] = rounding_repair_json(r.rounding, r.rounding_method);
-  j["counts"] = {{"candidate_pairs", r.counts.candidate_pairs},   {"intersecting_pairs", r.counts.intersecting_pairs},
-                 {"coplanar_pairs", r.counts.coplanar_pairs},     {"new_vertices", r.counts.new_vertices},
-                 {"split_faces", r.counts.split_faces},           {"patches", r.counts.patches}};
-  j["time_s"] = {{"check", r.time.check},         {"broad_phase", r.time.broad_phase},
-                 {"narrow_phase", r.time.narrow_phase}, {"retriangulation", r.time.retriangulation},
-                 {"labelling", r.time.labelling}, {"assembly", r.time.assembly}, {"rounding", r.time.rounding},
-                 {"total", r.time.total()},       {"validation", r.time.validation}};
+  io::Json time_s = boolean_timing_json(r.time);
+  time_s.update(io::Json{{"total", r.time.total()}, {"validation", r.time.validation}});
+  j.update(io::Json{{"undecided_pairs", pairs},
+                    {"operands", {{"a", operand_json(in.input_a, *in.a)}, {"b", operand_json(in.input_b, *in.b)}}},
+                    {"output",
+                     {{"vertices", r.mesh.vertices.size()},
+                      {"faces", r.mesh.faces.size()},
+                      {"creases", r.mesh.tags.creases().size()}}},
+                    {"validation", r.ok() ? io::solid_report_json(r.validation) : io::Json(nullptr)},
+                    {"exact_self_intersecting_pairs",
+                     r.exact_self_intersecting_pairs ? io::Json(*r.exact_self_intersecting_pairs) : io::Json(nullptr)},
+                    {"rounding_error", io::json_measure(r.rounding_error)},
+                    {"rounding", rounding_repair_json(r.rounding, r.rounding_method)},
+                    {"counts",
+                     {{"candidate_pairs", r.counts.candidate_pairs},
+                      {"intersecting_pairs", r.counts.intersecting_pairs},
+                      {"coplanar_pairs", r.counts.coplanar_pairs},
+                      {"new_vertices", r.counts.new_vertices},
+                      {"split_faces", r.counts.split_faces},
+                      {"patches", r.counts.patches}}},
+                    {"time_s", time_s}});
   if (in.oracle) {
     const Oracle_comparison& o = *in.oracle;
     j["oracle"] = {{"cgal_ok", o.cgal_ok},

@@ -14,6 +14,10 @@ namespace relgeo::tool {
 /// experiment report it: {method, rounds, defects_before, moved_vertices,
 /// flips, collapses, largest_change, remaining_pairs, remaining_degenerate_faces}.
 io::Json rounding_repair_json(const Rounding_repair_report& r, const std::string& method);
+/// The seconds of the Boolean's phases, as `boolean` and the experiment report
+/// them: {check, broad_phase, narrow_phase, retriangulation, labelling,
+/// assembly, rounding}.
+io::Json boolean_timing_json(const Boolean_timing& t);
 
 struct Boolean_report_input {
   std::string operation, input_a, input_b;
@@ -39,12 +43,12 @@ io::Json boolean_report_json(const Boolean_report_input& in);
 /// Subdivision_boolean_run alike).
 template <class Run>
 void put_run_header(io::Json& j, const std::string& operation, const Run& r) {
-  j["operation"] = operation;
-  j["kernel"] = r.kernel;
-  j["kernel_model"] = r.kernel_model;
-  j["certified"] = r.certified;
-  j["status"] = r.ok() ? "ok" : "failed";
-  j["failure"] = r.failure;
+  j.update(io::Json{{"operation", operation},
+                    {"kernel", r.kernel},
+                    {"kernel_model", r.kernel_model},
+                    {"certified", r.certified},
+                    {"status", r.ok() ? "ok" : "failed"},
+                    {"failure", r.failure}});
 }
 /// {file, vertices, faces, volume} of an operand (volume: sum of the faces' signed tetrahedra in doubles).
 io::Json operand_json(const std::string& file, const Mesh_double& m);

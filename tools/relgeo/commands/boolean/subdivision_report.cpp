@@ -47,33 +47,45 @@ io::Json subdivision_validation_json(const Subdivision_validation& v) {
           {"undecided_pairs", pairs}};
 }
 
+io::Json subdivision_boolean_counts_json(const Subdivision_boolean_counts& c) {
+  return {{"curve_vertices", c.curve_vertices},
+          {"curve_edges", c.curve_edges},
+          {"bad_faces", {c.bad_faces[0], c.bad_faces[1]}},
+          {"fitted_vertices", c.fitted_vertices}};
+}
+
+io::Json subdivision_boolean_distance_json(const Subdivision_boolean_output& r) {
+  return {{"subdivision_to_polyhedral", surface_distance_json(r.distance_to_polyhedral)},
+          {"subdivision_to_polyhedral_fitted", surface_distance_json(r.distance_to_polyhedral_fitted)}};
+}
+
+io::Json subdivision_boolean_timing_json(const Subdivision_boolean_timing& t) {
+  return {
+      {"limit_meshes", t.limit_meshes}, {"boolean", t.boolean},       {"mapping", t.mapping}, {"fitting", t.fitting},
+      {"distance", t.distance},         {"validation", t.validation}, {"layer", t.layer()},   {"total", t.total()}};
+}
+
 io::Json subdivision_boolean_report_json(const Subdivision_boolean_report_input& in) {
   const Subdivision_boolean_run& r = *in.run;
-  io::Json j;
-  put_run_header(j, in.operation, r);
-  j["level"] = r.level;
-  j["fitted"] = r.fitted;
-  j["operands"] = {{"a", operand_json(in.input_a, *in.a)}, {"b", operand_json(in.input_b, *in.b)}};
-  j["output"] = {{"vertices", r.control.vertices.size()},
-                 {"faces", r.control.faces.size()},
-                 {"creases", r.control.tags.creases().size()},
-                 {"corners", r.control.tags.corners().size()},
-                 {"curve_vertices", r.curve_vertices.size()}};
-  j["counts"] = {{"curve_vertices", r.counts.curve_vertices},
-                 {"curve_edges", r.counts.curve_edges},
-                 {"bad_faces", {r.counts.bad_faces[0], r.counts.bad_faces[1]}},
-                 {"fitted_vertices", r.counts.fitted_vertices}};
-  j["distance"] = {{"subdivision_to_polyhedral", surface_distance_json(r.distance_to_polyhedral)},
-                   {"subdivision_to_polyhedral_fitted", surface_distance_json(r.distance_to_polyhedral_fitted)}};
-  j["validation"] = r.ok() ? subdivision_validation_json(r.validation) : io::Json(nullptr);
   io::Json polyhedral = boolean_report_json({in.operation, in.input_a, in.input_b, in.a, in.b, &r.polyhedral, nullptr});
   for (const char* key : {"operation", "kernel", "kernel_model", "certified", "operands", "exact_self_intersecting_pairs"})
     polyhedral.erase(key);
-  j["polyhedral"] = polyhedral;
-  const Subdivision_boolean_timing& t = r.time;
-  j["time_s"] = {{"limit_meshes", t.limit_meshes}, {"boolean", t.boolean},       {"mapping", t.mapping},
-                 {"fitting", t.fitting},           {"distance", t.distance},     {"validation", t.validation},
-                 {"layer", t.layer()},             {"total", t.total()}};
+  io::Json j;
+  put_run_header(j, in.operation, r);
+  j.update(io::Json{{"level", r.level},
+                    {"fitted", r.fitted},
+                    {"operands", {{"a", operand_json(in.input_a, *in.a)}, {"b", operand_json(in.input_b, *in.b)}}},
+                    {"output",
+                     {{"vertices", r.control.vertices.size()},
+                      {"faces", r.control.faces.size()},
+                      {"creases", r.control.tags.creases().size()},
+                      {"corners", r.control.tags.corners().size()},
+                      {"curve_vertices", r.curve_vertices.size()}}},
+                    {"counts", subdivision_boolean_counts_json(r.counts)},
+                    {"distance", subdivision_boolean_distance_json(r)},
+                    {"validation", r.ok() ? subdivision_validation_json(r.validation) : io::Json(nullptr)},
+                    {"polyhedral", polyhedral},
+                    {"time_s", subdivision_boolean_timing_json(r.time)}});
   return j;
 }
 

@@ -24,6 +24,12 @@ io::Json surface_distance_json(const Surface_distance& d);
 /// note}}, vertices, faces, candidate_pairs, separated_pairs,
 /// adjacent_pairs, certified_adjacent_pairs, certified_regions, undecided_pairs [[f, g], ...]}.
 io::Json subdivision_validation_json(const Subdivision_validation& v);
+/// {curve_vertices, curve_edges, bad_faces [A, B], fitted_vertices}.
+io::Json subdivision_boolean_counts_json(const Subdivision_boolean_counts& c);
+/// {subdivision_to_polyhedral, subdivision_to_polyhedral_fitted} (surface_distance_json each).
+io::Json subdivision_boolean_distance_json(const Subdivision_boolean_output& r);
+/// {limit_meshes, boolean, mapping, fitting, distance, validation, layer, total} in seconds.
+io::Json subdivision_boolean_timing_json(const Subdivision_boolean_timing& t);
 
 /// JSON fields: operation, kernel, kernel_model, certified, status, failure,
 /// level, fitted, operands {a, b}, output {vertices, faces, creases, corners,

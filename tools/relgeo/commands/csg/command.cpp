@@ -48,11 +48,6 @@ Csg_node parse_node(const io::Json& j, const std::filesystem::path& base, const 
 io::Json report_json(const Csg_command_options& o, const Csg_result& r, double total_seconds) {
   // The double kernel is not certified: its Booleans round to nearest.
   const std::string method = o.kernel == "double" ? "nearest" : o.rounding;
-  io::Json j;
-  j["tree"] = o.tree;
-  j["kernel"] = o.kernel;
-  j["status"] = r.ok() ? "ok" : "failed";
-  j["failure"] = r.failure;
   io::Json steps = io::Json::array();
   for (const Csg_step& s : r.steps) {
     steps.push_back({{"node", s.node},
@@ -65,13 +60,17 @@ io::Json report_json(const Csg_command_options& o, const Csg_result& r, double t
                      {"rounding", rounding_repair_json(s.rounding, method)},
                      {"seconds", s.seconds}});
   }
-  j["steps"] = steps;
-  j["output"] = {{"vertices", r.mesh.vertices.size()},
-                 {"faces", r.mesh.faces.size()},
-                 {"volume", io::json_measure(r.steps.empty() ? 0.0 : r.steps.back().volume)}};
-  j["seconds"] = r.seconds;
-  j["total_seconds"] = total_seconds;
-  return j;
+  return io::Json{{"tree", o.tree},
+                  {"kernel", o.kernel},
+                  {"status", r.ok() ? "ok" : "failed"},
+                  {"failure", r.failure},
+                  {"steps", steps},
+                  {"output",
+                   {{"vertices", r.mesh.vertices.size()},
+                    {"faces", r.mesh.faces.size()},
+                    {"volume", io::json_measure(r.steps.empty() ? 0.0 : r.steps.back().volume)}}},
+                  {"seconds", r.seconds},
+                  {"total_seconds", total_seconds}};
 }
 
 std::string report_text(const Csg_result& r) {

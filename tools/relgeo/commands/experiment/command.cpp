@@ -77,10 +77,7 @@ int run_experiment(const Experiment_options& o, Streams io) {
   ctx.slow_kernel_cases = o.quick ? ctx.workload_size / 10 : ctx.workload_size;
   ctx.min_timing_seconds = o.quick ? 0.002 : 0.05;
 
-  Json all;
-  all["output"] = dir.generic_string();
-  all["quick"] = o.quick;
-  all["workload_size"] = ctx.workload_size;
+  Json all{{"output", dir.generic_string()}, {"quick", o.quick}, {"workload_size", ctx.workload_size}};
   Json sections = Json::object();
   std::vector<std::string> failures;
   bool first = true;
@@ -100,11 +97,7 @@ int run_experiment(const Experiment_options& o, Streams io) {
     ctx.progress("start");
     Section_report rep = sec.run(ctx);
     const double t = section_start.elapsed();
-    Json j;
-    j["section"] = ctx.section;
-    j["quick"] = o.quick;
-    j["workload_size"] = ctx.workload_size;
-    j["time_s"] = t;
+    Json j{{"section", ctx.section}, {"quick", o.quick}, {"workload_size", ctx.workload_size}, {"time_s", t}};
     for (auto& [k, v] : rep.json.items()) j[k] = v;
     j["failures"] = rep.failures;
     write_text_file(dir / (ctx.section + ".json"), io::dump_json(j) + "\n");

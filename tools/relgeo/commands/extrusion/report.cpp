@@ -25,16 +25,11 @@ std::string problem_where(const Extrusion_problem& p) {
 }
 
 Json problem_json(const Extrusion_problem& p) {
-  Json j;
-  j["condition"] = static_cast<int>(p.condition);
-  j["set"] = p.set;
-  j["curves"] = Json::array({p.curve_a, p.curve_b});
-  j["margin"] = io::json_measure(p.margin);
-  j["uncertainty"] = io::json_measure(p.uncertainty);
-  j["computation_error"] = io::json_measure(p.computation_error);
-  j["slack"] = io::json_measure(p.slack());
-  j["verdict"] = to_string(p.verdict);
-  return j;
+  return Json{
+      {"condition", static_cast<int>(p.condition)},     {"set", p.set},
+      {"curves", Json::array({p.curve_a, p.curve_b})},  {"margin", io::json_measure(p.margin)},
+      {"uncertainty", io::json_measure(p.uncertainty)}, {"computation_error", io::json_measure(p.computation_error)},
+      {"slack", io::json_measure(p.slack())},           {"verdict", to_string(p.verdict)}};
 }
 
 }  // namespace
@@ -70,21 +65,19 @@ Json extrusion_report_json(const io::Contour_input& in, std::string_view kernel,
   j["verdict"] = to_string(r.verdict);
   j["certified"] = r.verdict == Extrusion_verdict::certified;
   Json conds = Json::array();
-  for (const auto& s : r.conditions) {
-    Json cj;
-    cj["condition"] = static_cast<int>(s.condition);
-    cj["name"] = to_string(s.condition);
-    cj["verdict"] = to_string(s.verdict);
-    cj["problems"] = s.problems;
-    cj["certified"] = s.certified;
-    cj["uncertain"] = s.uncertain;
-    cj["refused"] = s.refused;
-    cj["pruned"] = s.pruned;
-    cj["min_margin"] = (s.problems == 0 && s.pruned == 0) ? Json(nullptr) : io::json_measure(s.min_margin);
-    cj["min_margin_is_prune_bound"] = s.min_margin_is_prune_bound;
-    cj["worst"] = s.worst ? problem_json(*s.worst) : Json(nullptr);
-    conds.push_back(cj);
-  }
+  for (const auto& s : r.conditions)
+    conds.push_back(
+        Json{{"condition", static_cast<int>(s.condition)},
+             {"name", to_string(s.condition)},
+             {"verdict", to_string(s.verdict)},
+             {"problems", s.problems},
+             {"certified", s.certified},
+             {"uncertain", s.uncertain},
+             {"refused", s.refused},
+             {"pruned", s.pruned},
+             {"min_margin", (s.problems == 0 && s.pruned == 0) ? Json(nullptr) : io::json_measure(s.min_margin)},
+             {"min_margin_is_prune_bound", s.min_margin_is_prune_bound},
+             {"worst", s.worst ? problem_json(*s.worst) : Json(nullptr)}});
   j["conditions"] = conds;
   j["offending_total"] = r.offending_total;
   Json off = Json::array();

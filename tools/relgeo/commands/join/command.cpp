@@ -56,15 +56,15 @@ Join_tool_result run_or_explain(const Join_tool_options& o, const std::string& o
 }
 
 Json summary_json(const Join_report& r) {
-  Json s;
-  s["absolute_error_before"] = io::json_measure(largest(r, [](const auto& f) { return f.before.absolute; }));
-  s["absolute_error_after"] = io::json_measure(largest(r, [](const auto& f) { return f.after.absolute; }));
-  s["normal_vector_error_before"] = io::json_measure(largest(r, [](const auto& f) { return f.before.normal_vector; }));
-  s["normal_vector_error_after"] = io::json_measure(largest(r, [](const auto& f) { return f.after.normal_vector; }));
-  s["flipped_before"] = total(r, [](const auto& f) { return f.orientation_before.flipped; });
-  s["flipped_after"] = total(r, [](const auto& f) { return f.orientation_after.flipped; });
-  s["overlaps_after"] = total(r, [](const auto& f) { return f.overlaps_after; });
-  return s;
+  return Json{
+      {"absolute_error_before", io::json_measure(largest(r, [](const auto& f) { return f.before.absolute; }))},
+      {"absolute_error_after", io::json_measure(largest(r, [](const auto& f) { return f.after.absolute; }))},
+      {"normal_vector_error_before",
+       io::json_measure(largest(r, [](const auto& f) { return f.before.normal_vector; }))},
+      {"normal_vector_error_after", io::json_measure(largest(r, [](const auto& f) { return f.after.normal_vector; }))},
+      {"flipped_before", total(r, [](const auto& f) { return f.orientation_before.flipped; })},
+      {"flipped_after", total(r, [](const auto& f) { return f.orientation_after.flipped; })},
+      {"overlaps_after", total(r, [](const auto& f) { return f.overlaps_after; })}};
 }
 
 std::string text_report(const Join_tool_options& o, const std::string& output, const Join_tool_result& res) {
@@ -149,17 +149,17 @@ int run_join_command(const Join_tool_options& o, Streams io) {
                                    " flipped triangle(s) in (u,v)")
         .write(o.svg);
 
-  Json j;
-  j["command"] = "join";
-  j["kernel"] = find_kernel(o.kernel).label();
-  j["kernel_model"] = res.kernel_model;
-  j["surface"] = o.surface;
-  j["meshes"] = o.meshes;
-  j["curves"] = o.curves;
-  j["output"] = output;
-  j["summary"] = summary_json(res.report);
-  j["criteria"] = {{"max_absolute_error", io::json_measure(o.max_absolute_error)},
-                   {"max_normal_error", io::json_measure(o.max_normal_error)}};
+  Json j{{"command", "join"},
+         {"kernel", find_kernel(o.kernel).label()},
+         {"kernel_model", res.kernel_model},
+         {"surface", o.surface},
+         {"meshes", o.meshes},
+         {"curves", o.curves},
+         {"output", output},
+         {"summary", summary_json(res.report)},
+         {"criteria",
+          {{"max_absolute_error", io::json_measure(o.max_absolute_error)},
+           {"max_normal_error", io::json_measure(o.max_normal_error)}}}};
   for (const auto& [key, value] : res.json.items())
     if (!j.contains(key)) j[key] = value;
   if (!o.svg.empty()) j["svg"] = o.svg;

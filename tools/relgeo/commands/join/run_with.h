@@ -139,12 +139,12 @@ Join_command_report run_join_with(const Join_command_options& o) {
 /// The command's JSON output.
 inline io::Json to_json(const Join_command_report& r) {
   io::Json j = to_json(r.report);
-  j["status"] = r.status;
-  j["failure"] = r.failure.empty() ? io::Json(nullptr) : io::Json(r.failure);
-  j["surface"] = r.surface;
-  j["meshes"] = r.meshes;
-  j["output"] = r.output;
-  j["face_count"] = r.faces;
+  j.update(io::Json{{"status", r.status},
+                    {"failure", r.failure.empty() ? io::Json(nullptr) : io::Json(r.failure)},
+                    {"surface", r.surface},
+                    {"meshes", r.meshes},
+                    {"output", r.output},
+                    {"face_count", r.faces}});
   return j;
 }
 

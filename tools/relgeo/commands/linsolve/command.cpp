@@ -60,6 +60,12 @@ Linear_system<double> parse_system(const std::string& text, const std::string& s
 }
 
 Json measure(double v) { return io::json_measure(v); }
+/// The entries of a vector as JSON coordinates.
+Json coordinates_json(const std::vector<double>& v) {
+  Json x = Json::array();
+  for (double e : v) x.push_back(io::json_coordinate(e));
+  return x;
+}
 std::string vector_text(const std::vector<double>& v, std::size_t max_listed = 8) {
   std::string s = "(";
   for (std::size_t i = 0; i < v.size() && i < max_listed; ++i) s += (i ? ", " : "") + format_17(v[i]);
@@ -146,38 +152,26 @@ int run_linsolve_command(const Linsolve_options& o, Streams io) {
   const std::string scalar_u = format_g(scalar_unit_roundoff(o.scalar), 3);
 
   if (o.format == Format::json) {
-    Json j;
-    j["input"] = name;
-    j["n"] = ref.size();
-    j["method"] = o.method;
-    j["scalar"] = o.scalar;
-    j["unit_roundoff"] = scalar_unit_roundoff(o.scalar);
-    j["status"] = failed ? "failed" : "ok";
-    j["failure"] = failure;
-    if (failed) {
-      j["x"] = nullptr;
-    } else {
-      Json x = Json::array();
-      for (double v : run.x) x.push_back(io::json_coordinate(v));
-      j["x"] = x;
-    }
     auto m = [&](double v) { return failed ? Json(nullptr) : measure(v); };
-    j["normwise_backward_error"] = m(run.errors.normwise_backward_error);
-    j["componentwise_backward_error"] = m(run.errors.componentwise_backward_error);
-    j["forward_error"] = (failed || !run.errors.forward_error) ? Json(nullptr) : measure(*run.errors.forward_error);
-    j["condition_number"] = measure(kappa);
-    j["condition_number_exact"] = ref.condition().exact;
-    j["forward_error_bound"] = bound ? Json(*bound) : Json(nullptr);
-    j["growth_factor"] = (!failed && run.growth_factor) ? measure(*run.growth_factor) : Json(nullptr);
-    j["residual_norm"] = m(run.errors.residual_norm);
-    if (exact.empty()) {
-      j["exact_solution"] = nullptr;
-    } else {
-      Json x = Json::array();
-      for (double v : exact) x.push_back(io::json_coordinate(v));
-      j["exact_solution"] = x;
-    }
-    j["time_s"] = failed ? Json(nullptr) : Json(run.time_s);
+    const Json j{
+        {"input", name},
+        {"n", ref.size()},
+        {"method", o.method},
+        {"scalar", o.scalar},
+        {"unit_roundoff", scalar_unit_roundoff(o.scalar)},
+        {"status", failed ? "failed" : "ok"},
+        {"failure", failure},
+        {"x", failed ? Json(nullptr) : coordinates_json(run.x)},
+        {"normwise_backward_error", m(run.errors.normwise_backward_error)},
+        {"componentwise_backward_error", m(run.errors.componentwise_backward_error)},
+        {"forward_error", (failed || !run.errors.forward_error) ? Json(nullptr) : measure(*run.errors.forward_error)},
+        {"condition_number", measure(kappa)},
+        {"condition_number_exact", ref.condition().exact},
+        {"forward_error_bound", bound ? Json(*bound) : Json(nullptr)},
+        {"growth_factor", (!failed && run.growth_factor) ? measure(*run.growth_factor) : Json(nullptr)},
+        {"residual_norm", m(run.errors.residual_norm)},
+        {"exact_solution", exact.empty() ? Json(nullptr) : coordinates_json(exact)},
+        {"time_s", failed ? Json(nullptr) : Json(run.time_s)}};
     out << io::dump_json(j) << '\n';
   } else {
     auto kv = [&](const std::string& k, const std::string& v) {

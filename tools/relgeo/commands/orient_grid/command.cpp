@@ -67,11 +67,7 @@ void add_points_text(Key_value_text& kv, const analysis::Orientation_grid_triple
 }
 
 Json kernel_json(const Grid_run& g) {
-  Json j;
-  j["kernel"] = g.kernel->label();
-  j["kernel_model"] = g.kernel->name;
-  j["certified"] = g.kernel->certified;
-  return j;
+  return Json{{"kernel", g.kernel->label()}, {"kernel_model", g.kernel->name}, {"certified", g.kernel->certified}};
 }
 
 /// The report of one kernel (the format of `--kernel K`).

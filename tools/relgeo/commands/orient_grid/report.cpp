@@ -4,14 +4,14 @@
 namespace relgeo::tool {
 
 void add_tally_json(io::Json& j, const analysis::Sign_tally& t, const char* cases_key) {
-  j[cases_key] = t.cases;
-  j["wrong"] = t.wrong();
-  j["plus_to_zero"] = t.plus_to_zero;
-  j["minus_to_zero"] = t.minus_to_zero;
-  j["zero_to_sign"] = t.zero_to_sign;
-  j["inversions"] = t.inversions;
-  j["uncertain"] = t.uncertain;
-  j["correct"] = t.correct;
+  j.update(io::Json{{cases_key, t.cases},
+                    {"wrong", t.wrong()},
+                    {"plus_to_zero", t.plus_to_zero},
+                    {"minus_to_zero", t.minus_to_zero},
+                    {"zero_to_sign", t.zero_to_sign},
+                    {"inversions", t.inversions},
+                    {"uncertain", t.uncertain},
+                    {"correct", t.correct}});
 }
 
 std::vector<std::string> tally_header() {

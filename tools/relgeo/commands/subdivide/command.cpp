@@ -108,47 +108,47 @@ int run_subdivide_command(const Subdivide_options& options, Streams io) {
   const Mesh_double& result = o.limit ? r.limit : r.refined;
   write_mesh(o.output, result);
 
-  Json j;
-  j["command"] = "subdivide";
-  j["kernel"] = r.kernel;
-  j["kernel_model"] = r.kernel_model;
-  j["levels"] = o.levels;
-  j["limit"] = o.limit;
-  j["rules"] = o.rules;
-  j["weights"] = "loop";
-  Json ji;
-  ji["file"] = o.input;
-  ji["vertices"] = mesh.vertices.size();
-  ji["faces"] = mesh.faces.size();
-  ji["edges"] = r.input_edges;
-  ji["creases"] = mesh.tags.creases().size();
-  ji["corners"] = mesh.tags.corners().size();
-  j["input"] = ji;
-  Json jo;
-  jo["file"] = o.output;
-  jo["vertices"] = result.vertices.size();
-  jo["faces"] = result.faces.size();
-  jo["edges"] = r.refined_edges;
-  j["output"] = jo;
   Json hist = Json::object();
   for (const auto& [v, c] : r.valence_histogram) hist[std::to_string(v)] = c;
-  j["valence_histogram"] = hist;
-  j["patch_kinds"] = {{"regular", r.patch_kinds[0]}, {"regular_crease", r.patch_kinds[1]}, {"irregular", r.patch_kinds[2]}};
-  j["samples_per_face"] = o.samples ? (o.samples + 1) * (o.samples + 2) / 2 : 0;
-  j["samples"] = r.samples;
-  j["distance"] = {{"refined_mesh", r.refined_distance},
-                   {"limit_mesh", r.limit_distance},
-                   {"limit_normal_offset", r.limit_normal_offset},
-                   {"mesh_size", r.mesh_size}};
   Json jb = Json::array();
   long violations = 0;
   for (const auto& b : r.bounds) {
     jb.push_back(bound_json(b));
     if (b.is_bound) violations += b.samples_outside;
   }
-  j["bounds"] = jb;
-  j["time_s"] = {{"subdivision", r.time_subdivision}, {"sampling", r.time_sampling}, {"bounds", r.time_bounds}};
-  j["status"] = violations ? "failed" : "ok";
+  const Json j{
+      {"command", "subdivide"},
+      {"kernel", r.kernel},
+      {"kernel_model", r.kernel_model},
+      {"levels", o.levels},
+      {"limit", o.limit},
+      {"rules", o.rules},
+      {"weights", "loop"},
+      {"input",
+       {{"file", o.input},
+        {"vertices", mesh.vertices.size()},
+        {"faces", mesh.faces.size()},
+        {"edges", r.input_edges},
+        {"creases", mesh.tags.creases().size()},
+        {"corners", mesh.tags.corners().size()}}},
+      {"output",
+       {{"file", o.output},
+        {"vertices", result.vertices.size()},
+        {"faces", result.faces.size()},
+        {"edges", r.refined_edges}}},
+      {"valence_histogram", hist},
+      {"patch_kinds",
+       {{"regular", r.patch_kinds[0]}, {"regular_crease", r.patch_kinds[1]}, {"irregular", r.patch_kinds[2]}}},
+      {"samples_per_face", o.samples ? (o.samples + 1) * (o.samples + 2) / 2 : 0},
+      {"samples", r.samples},
+      {"distance",
+       {{"refined_mesh", r.refined_distance},
+        {"limit_mesh", r.limit_distance},
+        {"limit_normal_offset", r.limit_normal_offset},
+        {"mesh_size", r.mesh_size}}},
+      {"bounds", jb},
+      {"time_s", {{"subdivision", r.time_subdivision}, {"sampling", r.time_sampling}, {"bounds", r.time_bounds}}},
+      {"status", violations ? "failed" : "ok"}};
   if (!o.report.empty()) io::write_text_file(o.report, io::dump_json(j) + "\n", "report");
   if (o.format == Format::json) {
     out << io::dump_json(j) << '\n';

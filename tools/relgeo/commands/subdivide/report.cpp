@@ -4,17 +4,15 @@
 namespace relgeo::tool {
 
 io::Json bound_json(const Bound_summary& b) {
-  io::Json j;
-  j["method"] = b.method;
-  j["is_bound"] = b.is_bound;
-  j["min_lower"] = b.min_lower;
-  j["max_upper"] = b.max_upper;
-  j["mean_width"] = b.mean_width;
-  j["mean_tightness"] = b.mean_tightness;
-  j["max_tightness"] = b.max_tightness;
-  j["tightness_faces"] = b.tightness_faces;
-  j["samples_outside"] = b.samples_outside;
-  return j;
+  return io::Json{{"method", b.method},
+                  {"is_bound", b.is_bound},
+                  {"min_lower", b.min_lower},
+                  {"max_upper", b.max_upper},
+                  {"mean_width", b.mean_width},
+                  {"mean_tightness", b.mean_tightness},
+                  {"max_tightness", b.max_tightness},
+                  {"tightness_faces", b.tightness_faces},
+                  {"samples_outside", b.samples_outside}};
 }
 
 }  // namespace relgeo::tool

@@ -8,12 +8,7 @@
 
 namespace relgeo {
 
-#define RELGEO_JOINING_INSTANCES(K)                                                                         \
-  template Join_result join_meshes<K>(const Surface_model&, const std::vector<Triangle_mesh<Point_3<double>>>&, \
-                                      const K&, const Join_options&);                                       \
-  template Join_result naive_sewing<K>(const Surface_model&, const std::vector<Triangle_mesh<Point_3<double>>>&, \
-                                       const K&, const Join_options&);
-RELGEO_JOINING_COMPILED_KERNELS(RELGEO_JOINING_INSTANCES)
-#undef RELGEO_JOINING_INSTANCES
+RELGEO_JOINING_COMPILED_KERNELS(RELGEO_JOIN_MESHES_INSTANCE, template)
+RELGEO_JOINING_COMPILED_KERNELS(RELGEO_NAIVE_SEWING_INSTANCE, template)
 
 }  // namespace relgeo

@@ -8,10 +8,8 @@
 #pragma once
 
 #include "relgeo/boolean/boolean_types.h"
+#include "relgeo/kernel/compiled_kernels.h"
 #include "relgeo/kernel/concepts.h"
-#include "relgeo/kernel/exact_kernel.h"
-#include "relgeo/kernel/filtered_exact_kernel.h"
-#include "relgeo/kernel/naive_kernel.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo {
@@ -36,18 +34,12 @@ template <IntersectionKernel_3 K = Filtered_exact_kernel>
 Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b,
                           Boolean_operation op, const K& k = K{}, const Boolean_options& options = {});
 
-#if defined(RELGEO_COMPILED) && RELGEO_COMPILED
-// Instantiated once in relgeo::compiled (src/compiled/boolean.cpp), which
-// defines RELGEO_COMPILED for the targets that link it.
-extern template Boolean_result<Filtered_exact_kernel> boolean(const Triangle_mesh<Point_3<double>>&,
-                                                              const Triangle_mesh<Point_3<double>>&, Boolean_operation,
-                                                              const Filtered_exact_kernel&, const Boolean_options&);
-extern template Boolean_result<Exact_kernel> boolean(const Triangle_mesh<Point_3<double>>&,
-                                                     const Triangle_mesh<Point_3<double>>&, Boolean_operation,
-                                                     const Exact_kernel&, const Boolean_options&);
-extern template Boolean_result<Naive_kernel<double>> boolean(const Triangle_mesh<Point_3<double>>&,
-                                                             const Triangle_mesh<Point_3<double>>&, Boolean_operation,
-                                                             const Naive_kernel<double>&, const Boolean_options&);
+// The instances relgeo::compiled makes (src/compiled/boolean.cpp).
+#define RELGEO_BOOLEAN_INSTANCE(PREFIX, K)                                                                    \
+  PREFIX Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>&, const Triangle_mesh<Point_3<double>>&, \
+                                   Boolean_operation, const K&, const Boolean_options&);
+#if RELGEO_LINKS_COMPILED
+RELGEO_COMPILED_KERNELS(RELGEO_BOOLEAN_INSTANCE, extern template)
 #endif
 
 }  // namespace relgeo

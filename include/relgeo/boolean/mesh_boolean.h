@@ -152,14 +152,13 @@ class Boolean_engine {
   void check_operand(int m, const char* name) {
     // check_solid adds the exact self-intersection test (Face_bvh pairs,
     // pairs sharing a vertex or an edge allowed exactly that) to check_mesh.
-    Mesh_topology topology;
-    std::optional<Face_bvh> bvh;
+    internal::Checked_mesh checked;
     Mesh_report report = options_.check_self_intersections
-                             ? internal::check_solid<Check_kernel>(*mesh_[m], {}, topology, bvh, options_.threads)
-                             : internal::check_mesh<Check_kernel>(*mesh_[m], {}, topology);
+                             ? internal::check_solid<Check_kernel>(*mesh_[m], {}, checked, options_.threads)
+                             : internal::check_mesh<Check_kernel>(*mesh_[m], {}, checked.topology);
     if (!report.is_valid()) throw Invalid_operand(name, std::move(report.issues));
-    opposite_[m] = std::move(topology).take_opposites();
-    if (m == 1) bvh_b_ = std::move(bvh);
+    opposite_[m] = std::move(checked.topology).take_opposites();
+    if (m == 1) bvh_b_ = std::move(checked.bvh);
   }
 
   // ---- points -----------------------------------------------------------------

@@ -51,6 +51,7 @@
 #include "relgeo/boolean/subdivision_validation.h"
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/internal/stopwatch.h"
+#include "relgeo/kernel/compiled_kernels.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/point_mesh_distance.h"
 #include "relgeo/mesh/validity.h"
@@ -199,5 +200,16 @@ Subdivision_boolean_result<K> subdivision_boolean(const Triangle_mesh<Point_3<do
   r.time.validation = clock.lap();
   return r;
 }
+
+// The instances relgeo::compiled makes when it is built with Eigen
+// (src/compiled/subdivision_boolean.cpp; RELGEO_COMPILED_SUBDIVISION_BOOLEAN).
+#define RELGEO_SUBDIVISION_BOOLEAN_INSTANCE(PREFIX, K)                                                  \
+  PREFIX Subdivision_boolean_result<K> subdivision_boolean<K>(const Triangle_mesh<Point_3<double>>&,      \
+                                                              const Triangle_mesh<Point_3<double>>&,      \
+                                                              Boolean_operation, unsigned, const K&,      \
+                                                              const Subdivision_boolean_options&);
+#if defined(RELGEO_COMPILED_SUBDIVISION_BOOLEAN) && RELGEO_COMPILED_SUBDIVISION_BOOLEAN
+RELGEO_COMPILED_KERNELS(RELGEO_SUBDIVISION_BOOLEAN_INSTANCE, extern template)
+#endif
 
 }  // namespace relgeo

@@ -15,9 +15,10 @@
 #include "relgeo/kernel/interval_kernel.h"
 #endif
 
-/// X(K) for each compiled kernel K.
-#define RELGEO_JOINING_COMPILED_KERNELS(X) \
-  X(Failsafe_kernel<double>)               \
-  X(Interval_kernel)                       \
-  X(Filtered_exact_kernel)                 \
-  X(Exact_kernel)
+/// X(PREFIX, K) for each compiled kernel K (the convention of
+/// relgeo/kernel/compiled_kernels.h).
+#define RELGEO_JOINING_COMPILED_KERNELS(X, PREFIX) \
+  X(PREFIX, Failsafe_kernel<double>)               \
+  X(PREFIX, Interval_kernel)                       \
+  X(PREFIX, Filtered_exact_kernel)                 \
+  X(PREFIX, Exact_kernel)

@@ -412,12 +412,12 @@ Join_result join_meshes(const Surface_model& model, const std::vector<Triangle_m
   return result;
 }
 
+// The instances relgeo::compiled makes (src/compiled/joining.cpp).
+#define RELGEO_JOIN_MESHES_INSTANCE(PREFIX, K)                                                                          \
+  PREFIX Join_result join_meshes<K>(const Surface_model&, const std::vector<Triangle_mesh<Point_3<double>>>&, const K&, \
+                          const Join_options&);
 #if defined(RELGEO_COMPILED_JOINING) && RELGEO_COMPILED_JOINING
-#define RELGEO_JOIN_MESHES_INSTANCE(K)                                                                          \
-  extern template Join_result join_meshes<K>(const Surface_model&, const std::vector<Triangle_mesh<Point_3<double>>>&, \
-                                             const K&, const Join_options&);
-RELGEO_JOINING_COMPILED_KERNELS(RELGEO_JOIN_MESHES_INSTANCE)
-#undef RELGEO_JOIN_MESHES_INSTANCE
+RELGEO_JOINING_COMPILED_KERNELS(RELGEO_JOIN_MESHES_INSTANCE, extern template)
 #endif
 
 }  // namespace relgeo

@@ -221,12 +221,12 @@ Join_result naive_sewing(const Surface_model& model, const std::vector<Triangle_
   return result;
 }
 
+// The instances relgeo::compiled makes (src/compiled/joining.cpp).
+#define RELGEO_NAIVE_SEWING_INSTANCE(PREFIX, K)                                                                          \
+  PREFIX Join_result naive_sewing<K>(const Surface_model&, const std::vector<Triangle_mesh<Point_3<double>>>&, const K&, \
+                          const Join_options&);
 #if defined(RELGEO_COMPILED_JOINING) && RELGEO_COMPILED_JOINING
-#define RELGEO_NAIVE_SEWING_INSTANCE(K)                                                                         \
-  extern template Join_result naive_sewing<K>(const Surface_model&, const std::vector<Triangle_mesh<Point_3<double>>>&, \
-                                              const K&, const Join_options&);
-RELGEO_JOINING_COMPILED_KERNELS(RELGEO_NAIVE_SEWING_INSTANCE)
-#undef RELGEO_NAIVE_SEWING_INSTANCE
+RELGEO_JOINING_COMPILED_KERNELS(RELGEO_NAIVE_SEWING_INSTANCE, extern template)
 #endif
 
 }  // namespace relgeo

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/kernel/compiled_kernels.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
@@ -202,21 +203,27 @@ std::vector<std::pair<Index, Index>> self_intersections(const Triangle_mesh<P>& 
 
 namespace internal {
 
-/// check_solid under kernel K, leaving the mesh's topology in `t` and, when
-/// the self-intersection test ran, its face hierarchy in `bvh` (the mesh
-/// Boolean goes on with both); the test on `threads` threads
-/// (Self_intersection_options).
+/// What the checks of a mesh leave behind for a caller that goes on with the
+/// mesh (the Boolean): its topology and, when the self-intersection test
+/// ran, its face hierarchy.
+struct Checked_mesh {
+  Mesh_topology topology;
+  std::optional<Face_bvh> bvh;
+};
+
+/// check_solid under kernel K, leaving what it built in `checked`; the test
+/// on `threads` threads (Self_intersection_options).
 template <Kernel K, class P>
-Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& options, Mesh_topology& t,
-                        std::optional<Face_bvh>& bvh, int threads = 1) {
-  Mesh_report r = internal::check_mesh<K>(m, options, t);
+Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& options, Checked_mesh& checked,
+                        int threads = 1) {
+  Mesh_report r = internal::check_mesh<K>(m, options, checked.topology);
   const bool can = !r.has(Mesh_defect::index_out_of_range) && !r.has(Mesh_defect::repeated_vertex_in_face) &&
                    r.is_manifold() && r.is_consistently_oriented() &&
                    !r.has(Mesh_defect::non_finite_coordinate);
   if (!can) return r;
-  bvh.emplace(m, Face_bvh_options{.threads = threads});
-  const Self_intersections found =
-      internal::find_self_intersections(m, typename Kernel_for_point<Certified_kernel_for_number, P>::type{}, *bvh, threads, &t);
+  const Face_bvh& bvh = checked.bvh.emplace(m, Face_bvh_options{.threads = threads});
+  const Self_intersections found = internal::find_self_intersections(
+      m, typename Kernel_for_point<Certified_kernel_for_number, P>::type{}, bvh, threads, &checked.topology);
   if (!found.undecided.empty() || !found.undecided_faces.empty())
     throw Error(Error_code::computation_failure,
                 "check_solid: the kernel left " + std::to_string(found.undecided.size()) + " pairs and " +
@@ -236,10 +243,19 @@ Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& opt
 /// topology in a structured report.
 template <KernelOrDefault K = void, class P>
 Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& options = {}) {
-  using Kernel = Kernel_or_default<K, Predicate_kernel_for_number, P>;
-  Mesh_topology t;
-  std::optional<Face_bvh> bvh;
-  return internal::check_solid<Kernel>(m, options, t, bvh);
+  internal::Checked_mesh checked;
+  return internal::check_solid<Kernel_or_default<K, Predicate_kernel_for_number, P>>(m, options, checked);
 }
+
+// The instances relgeo::compiled makes (src/compiled/mesh_checks.cpp).
+#define RELGEO_SELF_INTERSECTION_INSTANCE(PREFIX, K)                                                             \
+  PREFIX Self_intersections find_self_intersections<K, Point_3<double>>(const Triangle_mesh<Point_3<double>>&,    \
+                                                                        const K&, const Self_intersection_options&); \
+  PREFIX Mesh_report internal::check_solid<K, Point_3<double>>(const Triangle_mesh<Point_3<double>>&,               \
+                                                               const Mesh_check_options&, internal::Checked_mesh&, \
+                                                               int);
+#if RELGEO_LINKS_COMPILED
+RELGEO_COMPILED_KERNELS(RELGEO_SELF_INTERSECTION_INSTANCE, extern template)
+#endif
 
 }  // namespace relgeo

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/kernel/compiled_kernels.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/face_bvh.h"
 #include "relgeo/mesh/internal/component_winding.h"
@@ -429,5 +430,13 @@ void require_valid_solid(const Triangle_mesh<P>& m, const Solid_validation_optio
   if (issues.empty()) issues.push_back({Mesh_defect::undecided, {invalid_index, invalid_index}});  // a not-checked check
   throw Invalid_mesh(context + " (" + r.summary() + ")", std::move(issues));
 }
+
+// The instances relgeo::compiled makes (src/compiled/mesh_checks.cpp).
+#define RELGEO_VALIDATE_SOLID_INSTANCE(PREFIX, K)                                              \
+  PREFIX Solid_report validate_solid<K, Point_3<double>>(const Triangle_mesh<Point_3<double>>&, const K&, \
+                                                         const Solid_validation_options&);
+#if RELGEO_LINKS_COMPILED
+RELGEO_COMPILED_KERNELS(RELGEO_VALIDATE_SOLID_INSTANCE, extern template)
+#endif
 
 }  // namespace relgeo

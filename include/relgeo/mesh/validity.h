@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/kernel/compiled_kernels.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/kernel/point_access.h"
@@ -187,5 +188,13 @@ void require_valid_mesh(const Triangle_mesh<P>& m, const Mesh_check_options& opt
   Mesh_report r = check_mesh<K>(m, options);
   if (!r.is_valid()) throw Invalid_mesh(context, std::move(r.issues));
 }
+
+// The instances relgeo::compiled makes (src/compiled/mesh_checks.cpp).
+#define RELGEO_CHECK_MESH_INSTANCE(PREFIX, K)                                                     \
+  PREFIX Mesh_report internal::check_mesh<K, Point_3<double>>(const Triangle_mesh<Point_3<double>>&, \
+                                                              const Mesh_check_options&, Mesh_topology&);
+#if RELGEO_LINKS_COMPILED
+RELGEO_COMPILED_KERNELS(RELGEO_CHECK_MESH_INSTANCE, extern template)
+#endif
 
 }  // namespace relgeo

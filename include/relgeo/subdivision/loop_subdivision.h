@@ -12,6 +12,7 @@
 
 #include "relgeo/core/errors.h"
 #include "relgeo/core/fp_environment.h"
+#include "relgeo/kernel/compiled_kernels.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/kernel/point_access.h"
@@ -479,5 +480,12 @@ Triangle_mesh<P> loop_limit_mesh(const Triangle_mesh<P>& m, unsigned levels,
   using Kernel = Kernel_or_default<K, Kernel_for_number, P>;
   return Loop_subdivider<Kernel>(options).limit_mesh(m, levels);
 }
+
+// relgeo::compiled makes the subdivider of double meshes (Kernel_for_number
+// of double: loop_subdivide's and loop_limit_mesh's default) once
+// (src/compiled/subdivision.cpp).
+#if RELGEO_LINKS_COMPILED
+extern template class Loop_subdivider<Naive_kernel<double>>;
+#endif
 
 }  // namespace relgeo

@@ -122,6 +122,16 @@ Entry refused(const char* file, const char* defect, const char* name, Parts part
   return {file, defect, [file, name, parts] { return expect_error<E>(name, [file] { (void)read(file); }, parts); }};
 }
 
+/// A mesh file that reads, whose check_mesh lists `defects` and that Loop's
+/// rules refuse with Invalid_mesh mentioning `loop_parts`.
+Entry defective(const char* file, const char* defect, std::map<Mesh_defect, std::size_t> defects, Parts loop_parts) {
+  return {file, defect, [file, defects, loop_parts] {
+            const Mesh m = read(file);
+            return "check_mesh: " + expect_defects(check_mesh(m), defects) + "; " +
+                   loop_refuses<Invalid_mesh>(m, loop_parts);
+          }};
+}
+
 std::vector<Entry> catalogue() {
   return {
       // ---- empty and truncated files ----------------------------------------------
@@ -174,18 +184,9 @@ std::vector<Entry> catalogue() {
        }},
       {"zero_area_face.off", "vertex 3 on edge 1-2",
        [] { return "check_mesh: " + expect_defects(check_mesh(read("zero_area_face.off")), {{Mesh_defect::collinear_face, 1}}); }},
-      {"repeated_face.off", "face 0 twice",
-       [] {
-         const Mesh m = read("repeated_face.off");
-         return "check_mesh: " + expect_defects(check_mesh(m), {{Mesh_defect::non_manifold_edge, 3}}) + "; " +
-                loop_refuses<Invalid_mesh>(m, {"non_manifold_edge"});
-       }},
-      {"flipped_face.off", "face 3 reversed",
-       [] {
-         const Mesh m = read("flipped_face.off");
-         return "check_mesh: " + expect_defects(check_mesh(m), {{Mesh_defect::inconsistent_orientation, 3}}) + "; " +
-                loop_refuses<Invalid_mesh>(m, {"inconsistent_orientation"});
-       }},
+      defective("repeated_face.off", "face 0 twice", {{Mesh_defect::non_manifold_edge, 3}}, {"non_manifold_edge"}),
+      defective("flipped_face.off", "face 3 reversed", {{Mesh_defect::inconsistent_orientation, 3}},
+                {"inconsistent_orientation"}),
       {"inside_out.off", "every face reversed (normals inward)",
        [] {
          // check_solid checks consistent orientation, not which side is
@@ -198,19 +199,10 @@ std::vector<Entry> catalogue() {
          return "check_solid: " + s + " (consistent; the side is not its test); validate_solid: outward_oriented " +
                 std::string(to_string(v.outward_oriented.status));
        }},
-      {"non_manifold_vertex.off", "two tetrahedra sharing vertex 0",
-       [] {
-         const Mesh m = read("non_manifold_vertex.off");
-         return "check_mesh: " + expect_defects(check_mesh(m), {{Mesh_defect::non_manifold_vertex, 1}}) + "; " +
-                loop_refuses<Invalid_mesh>(m, {"non_manifold_vertex (0, 2)"});
-       }},
-      {"non_manifold_edge.off", "edge 1-2 in three faces",
-       [] {
-         const Mesh m = read("non_manifold_edge.off");
-         return "check_mesh: " +
-                expect_defects(check_mesh(m), {{Mesh_defect::non_manifold_edge, 1}, {Mesh_defect::boundary_edge, 2}}) +
-                "; " + loop_refuses<Invalid_mesh>(m, {"non_manifold_edge (1, 2)"});
-       }},
+      defective("non_manifold_vertex.off", "two tetrahedra sharing vertex 0", {{Mesh_defect::non_manifold_vertex, 1}},
+                {"non_manifold_vertex (0, 2)"}),
+      defective("non_manifold_edge.off", "edge 1-2 in three faces",
+                {{Mesh_defect::non_manifold_edge, 1}, {Mesh_defect::boundary_edge, 2}}, {"non_manifold_edge (1, 2)"}),
       {"two_faces_two_edges.off", "two faces on the same three vertices",
        [] {
          const Mesh m = read("two_faces_two_edges.off");

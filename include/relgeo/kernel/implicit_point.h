@@ -177,5 +177,24 @@ class Implicit_kernel_base {
   Approximate_implicit_point_3 approximate_point_3_object() const { return {}; }
 };
 
+/// The orientation predicates of a policy whose implicit points are
+/// constructed points (`Point::point`, a point of the predicate kernel PK):
+/// PK's own tests on them, in-plane after Policy::project drops `axis`
+/// (CRTP base of the policies in internal/implicit_rounded.h and
+/// internal/implicit_cgal.h). Member templates: PK and Policy may be
+/// incomplete where the base is named.
+template <class Policy, class PK>
+struct Constructed_point_orientations {
+  template <class Point>
+  static Certified_sign orientation_3(const Point& a, const Point& b, const Point& c, const Point& d) {
+    return typename PK::Orientation_3{}(a.point, b.point, c.point, d.point);
+  }
+  template <class Point>
+  static Certified_sign orientation_2(const Point& a, const Point& b, const Point& c, int axis) {
+    return typename PK::Orientation_2{}(Policy::project(a.point, axis), Policy::project(b.point, axis),
+                                        Policy::project(c.point, axis));
+  }
+};
+
 }  // namespace internal
 }  // namespace relgeo

@@ -28,7 +28,8 @@ namespace relgeo::internal {
 /// (CK with exact constructions). Only RK's predicate functors are used, in
 /// member functions: RK may be incomplete where the policy is named.
 template <class RK, class CK>
-struct Cgal_implicit_policy {
+struct Cgal_implicit_policy : Constructed_point_orientations<Cgal_implicit_policy<RK, CK>, RK> {
+  friend struct Constructed_point_orientations<Cgal_implicit_policy, RK>;
   using FT = typename CK::FT;
   using Explicit = typename CK::Point_3;
   struct Point {
@@ -50,12 +51,6 @@ struct Cgal_implicit_policy {
       for (int i = 0; i < 9; ++i) w[i] = in(v[i]);
       return divided(tpi_coordinates(w), Implicit_point_kind::tpi);
     });
-  }
-  static Certified_sign orientation_3(const Point& a, const Point& b, const Point& c, const Point& d) {
-    return typename RK::Orientation_3{}(a.point, b.point, c.point, d.point);
-  }
-  static Certified_sign orientation_2(const Point& a, const Point& b, const Point& c, int axis) {
-    return typename RK::Orientation_2{}(project(a.point, axis), project(b.point, axis), project(c.point, axis));
   }
   static Certified_sign compare_xyz(const Point& a, const Point& b) {
     return in_default_environment(

@@ -18,7 +18,8 @@ namespace relgeo::internal {
 /// Policy of Implicit_kernel_base for a kernel K over FT that constructs
 /// implicit points as points of FT (X/W, Y/W, Z/W computed in FT).
 template <class K, class FT>
-struct Rounded_implicit_policy {
+struct Rounded_implicit_policy : Constructed_point_orientations<Rounded_implicit_policy<K, FT>, K> {
+  friend struct Constructed_point_orientations<Rounded_implicit_policy, K>;
   using Explicit = Point_3<FT>;
   struct Point {
     Point_3<FT> point;
@@ -32,12 +33,6 @@ struct Rounded_implicit_policy {
   }
   static std::optional<Point> tpi(const std::array<Explicit, 9>& v) {
     return divided(tpi_coordinates(v), Implicit_point_kind::tpi);
-  }
-  static Certified_sign orientation_3(const Point& a, const Point& b, const Point& c, const Point& d) {
-    return typename K::Orientation_3{}(a.point, b.point, c.point, d.point);
-  }
-  static Certified_sign orientation_2(const Point& a, const Point& b, const Point& c, int axis) {
-    return typename K::Orientation_2{}(project(a.point, axis), project(b.point, axis), project(c.point, axis));
   }
   static Certified_sign compare_xyz(const Point& a, const Point& b) {
     Certified_sign s = K::compare_ft(a.point.x, b.point.x);

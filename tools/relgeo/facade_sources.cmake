@@ -1,0 +1,14 @@
+# tools/relgeo/facade_sources.cmake — the tool's kernel-free facades: non-template
+# functions that take a kernel (or scalar) by name and run the algorithm under
+# it (the dispatch*.cpp files behind them), with the kernel registry and the
+# text helpers they use. The tool compiles them into its executable; the
+# Python module (python/) compiles the same files position-independent.
+# Paths relative to tools/relgeo.
+set(relgeo_tool_facade_sources
+  cli/text.cpp
+  kernels/registry.cpp
+  commands/orient_grid/dispatch.cpp
+  commands/hull/facade.cpp
+  commands/hull/dispatch.cpp
+  commands/linsolve/facade.cpp
+  commands/linsolve/dispatch.cpp)

@@ -1,0 +1,174 @@
+"""relgeo for Python: relgeo's algorithms on numpy arrays, under kernels named
+as the ``relgeo`` tool names them (doc/python.md).
+
+Every function takes ``kernel=`` by name (``relgeo.kernel_names()``; the
+default is the tool's default, ``"filtered"``) and raises ``ValueError``
+listing the valid names for a wrong one. Signs are int8: ``NEGATIVE`` (-1),
+``ZERO`` (0), ``POSITIVE`` (1) and ``UNCERTAIN`` (2), the answer of a kernel
+that knows it cannot decide (failsafe, interval). Bad input raises a
+``relgeo.Error`` subclass (``relgeo.errors``) carrying relgeo's message.
+"""
+
+import os
+
+import numpy as np
+
+from . import _relgeo
+from .errors import (Error, InvalidInput, InvalidMesh, NonFiniteInput, PreconditionViolation,
+                     SingularMatrix, UnreadableFile, UnwritableFile)
+
+NEGATIVE, ZERO, POSITIVE, UNCERTAIN = -1, 0, 1, 2
+"""The int8 values of relgeo::Certified_sign."""
+
+DEFAULT_KERNEL = "filtered"
+"""Filtered_exact_kernel: the tool's default kernel."""
+
+__all__ = [
+    "NEGATIVE", "ZERO", "POSITIVE", "UNCERTAIN", "DEFAULT_KERNEL",
+    "kernels", "kernel", "kernel_names",
+    "orient2d", "orient3d", "orientation_grid", "kettner_triples",
+    "convex_hull", "solve",
+    "read_mesh", "write_mesh", "validate_solid",
+    "Error", "InvalidInput", "NonFiniteInput", "UnreadableFile", "UnwritableFile", "InvalidMesh",
+    "PreconditionViolation", "SingularMatrix",
+]
+
+# ---- kernels ----------------------------------------------------------------------
+
+kernels = _relgeo.kernels
+kernel = _relgeo.kernel
+kettner_triples = _relgeo.kettner_triples
+
+
+def kernel_names():
+    """The kernel names the tool accepts, in its order (``relgeo --help``)."""
+    return [k["name"] for k in _relgeo.kernels()]
+
+
+# ---- predicates -------------------------------------------------------------------
+
+def _point_array(a, dimension, name):
+    a = np.asarray(a, dtype=np.float64)
+    if a.ndim not in (1, 2) or a.shape[-1] != dimension:
+        raise ValueError(f"{name} must have shape ({dimension},) or (n, {dimension}), not {a.shape}")
+    return a
+
+
+def _orientation(signs, dimension, kernel, **points):
+    arrays = [_point_array(a, dimension, name) for name, a in points.items()]
+    single = all(a.ndim == 1 for a in arrays)
+    # Broadcasting views (stride 0 for a single point): nothing is copied.
+    rows = np.broadcast_arrays(*(np.atleast_2d(a) for a in arrays))
+    result = signs(*rows, kernel)
+    return result[0] if single else result
+
+
+def orient2d(p, q, r, kernel=DEFAULT_KERNEL):
+    """Sign of the orientation of (p, q, r) under ``kernel``: 1 left turn
+    (counterclockwise), -1 right turn, 0 collinear, 2 (``UNCERTAIN``) when the
+    kernel cannot decide.
+
+    p, q, r: shape (2,) or (n, 2), broadcast against each other. Returns an
+    ``np.int8`` for three points, else an int8 array of shape (n,).
+    Raises ``NonFiniteInput`` (a ``ValueError``) for NaN or infinite coordinates.
+    """
+    return _orientation(_relgeo.orient2d, 2, kernel, p=p, q=q, r=r)
+
+
+def orient3d(p, q, r, s, kernel=DEFAULT_KERNEL):
+    """Sign of the orientation of (p, q, r, s) under ``kernel`` (relgeo's
+    orientation_3: positive when s lies on the positive side of the plane
+    (p, q, r) as CGAL's orientation does), 2 (``UNCERTAIN``) when undecided.
+
+    Shapes (3,) or (n, 3), broadcast; returns ``np.int8`` or an (n,) int8 array.
+    """
+    return _orientation(_relgeo.orient3d, 3, kernel, p=p, q=q, r=r, s=s)
+
+
+def orientation_grid(triple="a", p=None, q=None, r=None, size=256, kernel=DEFAULT_KERNEL):
+    """Kettner et al.'s orientation grid (``relgeo orient-grid``):
+    orientation(p + (X, Y) * 2**-53, q, r) for X, Y < size under ``kernel``,
+    against the exact sign.
+
+    Give ``triple`` ("a", "b", "c": ``kettner_triples()``) or all of p, q, r.
+    Returns a dict: kernel, size, p, q, r, answers and exact ((size, size)
+    int8 arrays, row = Y), cells, correct, uncertain, wrong, plus_to_zero,
+    minus_to_zero, zero_to_sign, inversions (the tool's counts).
+    """
+    if p is None and q is None and r is None:
+        triples = _relgeo.kettner_triples()
+        if triple not in triples:
+            raise ValueError(f"unknown triple {triple!r}; triples: {', '.join(triples)}")
+        p, q, r = triples[triple]
+    elif p is None or q is None or r is None:
+        raise ValueError("orientation_grid: give all of p, q, r (or a triple)")
+    return _relgeo.orientation_grid(tuple(p), tuple(q), tuple(r), size, kernel)
+
+
+# ---- hulls --------------------------------------------------------------------------
+
+def convex_hull(points, algorithm="graham-fortune", kernel=DEFAULT_KERNEL):
+    """The planar convex hull of an (n, 2) array (``relgeo hull``).
+
+    algorithm: "graham-incremental", "graham-fortune" (default),
+    "monotone-chain", or "cgal" (with a cgal-* kernel). Returns a dict with the
+    fields of ``relgeo hull --format json``: hull_indices (int64, CCW into
+    ``points``), hull ((h, 2) array), status ("ok" or "failed") and failure,
+    convex, error (E of eq. 3.2), backward_error (the certificate), its
+    moved_points and worst_point, backward_error_bound (graham-fortune),
+    coordinate_bound, uncertain_answers, predicate_calls, time_s, algorithm,
+    kernel, kernel_model, certified, n. Infinite measures are ``inf``.
+    """
+    return _relgeo.convex_hull(points, algorithm, kernel)
+
+
+# ---- linear systems -------------------------------------------------------------------
+
+def solve(A, b, pivoting="partial", scalar="double", exact_limit=100):
+    """Solves A x = b by Gaussian elimination (``relgeo linsolve``).
+
+    pivoting: the tool's --method, "none", "partial" (default), "complete",
+    "eigen-partial", "eigen-full". scalar: "float", "double" (default),
+    "long-double", "mpfr-BITS", "rational". The solution is measured exactly
+    against A and b. Returns a dict with the fields of ``relgeo linsolve
+    --format json``: status ("ok" / "failed": a zero pivot of the elimination
+    or overflow) and failure, x, normwise_backward_error (Rigal-Gaches),
+    componentwise_backward_error (Oettli-Prager), forward_error,
+    condition_number(_exact), forward_error_bound, growth_factor,
+    residual_norm, exact_solution (n <= exact_limit), time_s.
+    Raises ``SingularMatrix`` (a ``ValueError``) when A is exactly singular.
+    """
+    return _relgeo.solve(A, b, pivoting, scalar, exact_limit)
+
+
+# ---- meshes ---------------------------------------------------------------------------
+
+def read_mesh(path, triangulate=False):
+    """(V, F) of an OFF, OBJ, PLY or STL file: V (n, 3) float64, F (m, 3) int64.
+
+    triangulate: split polygons into fans (else a polygon is an error).
+    Raises ``UnreadableFile`` (an ``OSError``) for a missing or malformed file.
+    """
+    return _relgeo.read_mesh(os.fspath(path), triangulate)
+
+
+def write_mesh(path, V, F, binary=False):
+    """Writes (V, F) in the format of the path's extension (.off, .obj, .ply,
+    .stl; ASCII with 17 significant digits unless binary PLY/STL).
+
+    Raises ``InvalidMesh`` for a face index that is not a vertex,
+    ``NonFiniteInput`` for NaN coordinates, ``UnwritableFile`` when the file
+    cannot be written.
+    """
+    _relgeo.write_mesh(os.fspath(path), V, F, binary)
+
+
+def validate_solid(V, F):
+    """relgeo::validate_solid of (V, F) under the filtered exact kernel: the
+    Solid_report as a dict (the fields of the tool's JSON reports):
+    valid_solid, kernel, vertices, faces, edges, checks {name: {status,
+    count, where, note}}, components, volume, ... Every defect is reported,
+    never raised; only indices that are not vertex indices at all (negative)
+    raise ``ValueError``.
+    """
+    return _relgeo.validate_solid(V, F)

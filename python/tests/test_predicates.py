@@ -1,0 +1,179 @@
+"""orient2d / orient3d over arrays and Kettner's orientation grids, against
+the tool's `orient-grid` counts and against signs computed exactly here
+(fractions.Fraction holds every double exactly)."""
+
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import relgeo
+
+GRID_KERNELS = ["float", "double", "long-double", "failsafe", "interval", "filtered", "exact", "mpfr-53",
+                "cgal-sc", "cgal-epick"]
+COUNTS = ["cells", "correct", "uncertain", "wrong", "plus_to_zero", "minus_to_zero", "zero_to_sign", "inversions"]
+
+
+def grid_points(triple, size):
+    """The cells of `relgeo orient-grid`: p + (X, Y) * 2**-53, row-major by Y."""
+    (px, py), q, r = relgeo.kettner_triples()[triple]
+    ys, xs = np.mgrid[0:size, 0:size]
+    p = np.stack([px + xs.ravel() * 2.0**-53, py + ys.ravel() * 2.0**-53], axis=1)
+    return p, np.array(q), np.array(r)
+
+
+def tally(answers, exact):
+    """The tool's counts (relgeo::analysis::Sign_tally) of answers against exact signs."""
+    definite = answers != relgeo.UNCERTAIN
+    wrong = definite & (answers != exact)
+    return {
+        "cells": answers.size,
+        "correct": int(np.sum(answers == exact)),
+        "uncertain": int(np.sum(~definite)),
+        "wrong": int(np.sum(wrong)),
+        "plus_to_zero": int(np.sum(wrong & (exact == 1) & (answers == 0))),
+        "minus_to_zero": int(np.sum(wrong & (exact == -1) & (answers == 0))),
+        "zero_to_sign": int(np.sum(wrong & (exact == 0))),
+        "inversions": int(np.sum(wrong & (exact != 0) & (answers == -exact))),
+    }
+
+
+@pytest.mark.parametrize("triple", ["a", "b", "c"])
+@pytest.mark.parametrize("kernel", GRID_KERNELS)
+def test_vectorised_orient2d_reproduces_the_tools_grid(tool, triple, kernel):
+    size = 24
+    p, q, r = grid_points(triple, size)
+    answers = relgeo.orient2d(p, q, r, kernel=kernel)
+    exact = relgeo.orient2d(p, q, r, kernel="exact")
+    assert answers.dtype == np.int8 and answers.shape == (size * size,)
+    expected = tool.json("orient-grid", "--triple", triple, "--kernel", kernel, "--size", size)
+    assert tally(answers, exact) == {k: expected[k] for k in COUNTS}
+
+    grid = relgeo.orientation_grid(triple, size=size, kernel=kernel)
+    assert {k: grid[k] for k in COUNTS} == {k: expected[k] for k in COUNTS}
+    np.testing.assert_array_equal(grid["answers"].ravel(), answers)
+    np.testing.assert_array_equal(grid["exact"].ravel(), exact)
+
+
+def test_the_grids_are_hard():
+    """Triple a under double gives wrong answers and failsafe uncertain ones:
+    the comparisons above compare something."""
+    p, q, r = grid_points("a", 24)
+    exact = relgeo.orient2d(p, q, r, kernel="exact")
+    assert tally(relgeo.orient2d(p, q, r, kernel="double"), exact)["wrong"] > 0
+    assert np.any(relgeo.orient2d(p, q, r, kernel="failsafe") == relgeo.UNCERTAIN)
+
+
+def exact_orient2d(p, q, r):
+    (px, py), (qx, qy), (rx, ry) = ([Fraction(float(c)) for c in v] for v in (p, q, r))
+    d = (qx - px) * (ry - py) - (qy - py) * (rx - px)
+    return (d > 0) - (d < 0)
+
+
+def exact_orient3d(p, q, r, s):
+    """relgeo's orientation_3 is CGAL's: the sign of det[q-p, r-p, s-p]."""
+    a, b, c = ([Fraction(float(x)) - Fraction(float(y)) for x, y in zip(v, p)] for v in (q, r, s))
+    d = (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+         + a[2] * (b[0] * c[1] - b[1] * c[0]))
+    return (d > 0) - (d < 0)
+
+
+def near_degenerate(rng, n, dimension):
+    """n tuples of dimension + 1 points, exactly on a line (plane): dyadic
+    coordinates, small integer combinations, so every value is a double; then
+    the last point of half of the tuples moved by one to three ulps, and all
+    of it scaled by an odd factor that rounds. Exact zeros, and signs that
+    only exact arithmetic gets right."""
+    a = rng.integers(-64, 64, size=(n, dimension)) / 8
+    directions = [rng.integers(-64, 64, size=(n, dimension)) / 8 for _ in range(dimension - 1)]
+    points = [a] + [a + d for d in directions]
+    weights = rng.integers(-4, 5, size=(n, dimension - 1))
+    points.append(a + sum(w[:, None] * d for w, d in zip(weights.T, directions)))
+    moved = rng.random(n) < 0.5
+    ulps = rng.integers(1, 4, size=(n, dimension)) * rng.choice([-1, 1], size=(n, dimension))
+    points[-1] = np.where(moved[:, None], points[-1] + ulps * np.spacing(np.abs(points[-1]) + 1), points[-1])
+    return [x * 0.1 for x in points]
+
+
+@pytest.mark.parametrize("kernel", ["filtered", "exact", "interval", "failsafe", "double", "cgal-epick"])
+def test_orient2d_against_exact_signs(kernel):
+    p, q, r = near_degenerate(np.random.default_rng(2), 400, 2)
+    exact = np.array([exact_orient2d(*t) for t in zip(p, q, r)], dtype=np.int8)
+    assert np.count_nonzero(exact == 0) > 0 and np.count_nonzero(exact) > 0
+    answers = relgeo.orient2d(p, q, r, kernel=kernel)
+    definite = answers != relgeo.UNCERTAIN
+    if relgeo.kernel(kernel)["certified"]:
+        np.testing.assert_array_equal(answers[definite], exact[definite])
+    if relgeo.kernel(kernel)["exact_predicates"]:
+        np.testing.assert_array_equal(answers, exact)
+
+
+@pytest.mark.parametrize("kernel", ["filtered", "exact", "interval", "failsafe", "double", "cgal-epeck"])
+def test_orient3d_against_exact_signs(kernel):
+    p, q, r, s = near_degenerate(np.random.default_rng(3), 300, 3)
+    exact = np.array([exact_orient3d(*t) for t in zip(p, q, r, s)], dtype=np.int8)
+    assert np.count_nonzero(exact == 0) > 0 and np.count_nonzero(exact) > 0
+    answers = relgeo.orient3d(p, q, r, s, kernel=kernel)
+    definite = answers != relgeo.UNCERTAIN
+    if relgeo.kernel(kernel)["certified"]:
+        np.testing.assert_array_equal(answers[definite], exact[definite])
+    if relgeo.kernel(kernel)["exact_predicates"]:
+        np.testing.assert_array_equal(answers, exact)
+
+
+def test_single_points_give_a_scalar_and_broadcast():
+    assert relgeo.orient2d([0, 0], [1, 0], [0, 1]) == relgeo.POSITIVE
+    assert isinstance(relgeo.orient2d([0, 0], [1, 0], [0, 1]), np.int8)
+    assert relgeo.orient2d((0, 0), (1, 1), (2, 2)) == relgeo.ZERO
+    r = np.array([[0, 1], [0, -1], [2, 0], [0.5, 0]])
+    np.testing.assert_array_equal(relgeo.orient2d([0, 0], [1, 0], r), [1, -1, 0, 0])
+    assert relgeo.orient3d([0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]) == relgeo.POSITIVE
+    assert relgeo.orient3d([0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, -1]) == relgeo.NEGATIVE
+    # any array-like converts: integers, Fortran order, non-contiguous slices
+    wide = np.asfortranarray(np.tile(np.arange(8.0).reshape(4, 2), (1, 2)))[:, ::2]
+    assert relgeo.orient2d(wide, wide, wide).tolist() == [0, 0, 0, 0]
+
+
+def test_failsafe_admits_uncertainty_with_the_documented_value():
+    # Kettner's triple a, first cell: exactly collinear, failsafe cannot tell
+    p, q, r = relgeo.kettner_triples()["a"]
+    assert relgeo.orient2d(p, q, r, kernel="failsafe") == relgeo.UNCERTAIN == 2
+    assert relgeo.orient2d(p, q, r, kernel="exact") == relgeo.ZERO
+
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf"), -float("inf")])
+def test_non_finite_coordinates_raise(bad):
+    p = np.zeros((5, 2))
+    p[3, 1] = bad
+    for kernel in ["double", "filtered", "cgal-sc"]:
+        with pytest.raises(relgeo.NonFiniteInput, match="orient2d: tuple 3 has a NaN or infinite coordinate") as e:
+            relgeo.orient2d(p, [1, 0], [0, 1], kernel=kernel)
+        assert isinstance(e.value, ValueError) and e.value.code == "non_finite_coordinate"
+    with pytest.raises(relgeo.NonFiniteInput, match="orient3d: tuple 0"):
+        relgeo.orient3d([bad, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1])
+
+
+def test_wrong_shapes_raise_value_error():
+    with pytest.raises(ValueError, match=r"shape \(2,\) or \(n, 2\)"):
+        relgeo.orient2d(np.zeros((4, 3)), np.zeros((4, 2)), np.zeros((4, 2)))
+    with pytest.raises(ValueError, match=r"shape \(3,\) or \(n, 3\)"):
+        relgeo.orient3d(np.zeros(3), np.zeros(3), np.zeros(3), np.zeros((2, 2, 3)))
+    with pytest.raises(ValueError):  # 3 and 4 rows do not broadcast
+        relgeo.orient2d(np.zeros((3, 2)), np.zeros((4, 2)), np.zeros(2))
+    with pytest.raises(ValueError):
+        relgeo.orient2d(["a", "b"], [0, 0], [0, 1])
+    with pytest.raises(ValueError, match="shape"):  # the module itself checks too
+        relgeo._relgeo.orient2d(np.zeros((3, 2)), np.zeros((3, 3)), np.zeros((3, 2)), "double")
+
+
+def test_orientation_grid_bad_input(tool):
+    with pytest.raises(ValueError, match="unknown triple 'd'"):
+        relgeo.orientation_grid("d")
+    with pytest.raises(relgeo.InvalidInput, match=r"size must be in \[1, 4096\]"):
+        relgeo.orientation_grid(size=0)
+    with pytest.raises(relgeo.NonFiniteInput):
+        relgeo.orientation_grid(p=(float("nan"), 0), q=(1, 1), r=(2, 2), size=2)
+    custom = relgeo.orientation_grid(p=(0.5, 0.5), q=(12, 12), r=(24, 24), size=8, kernel="double")
+    expected = tool.json("orient-grid", "--p", "0.5,0.5", "--q", "12,12", "--r", "24,24", "--kernel", "double",
+                         "--size", 8)
+    assert {k: custom[k] for k in COUNTS} == {k: expected[k] for k in COUNTS}

@@ -59,13 +59,6 @@ Linear_system<double> parse_system(const std::string& text, const std::string& s
   return s;
 }
 
-Json measure(double v) { return io::json_measure(v); }
-/// The entries of a vector as JSON coordinates.
-Json coordinates_json(const std::vector<double>& v) {
-  Json x = Json::array();
-  for (double e : v) x.push_back(io::json_coordinate(e));
-  return x;
-}
 std::string vector_text(const std::vector<double>& v, std::size_t max_listed = 8) {
   std::string s = "(";
   for (std::size_t i = 0; i < v.size() && i < max_listed; ++i) s += (i ? ", " : "") + format_17(v[i]);
@@ -130,48 +123,18 @@ int run_linsolve_command(const Linsolve_options& o, Streams io) {
   // An exactly singular matrix is bad input (exit 2): Singular_matrix with
   // Error_code::invalid_input propagates to main.
   const Linear_reference ref(s.a, s.b, {.exact_solution_limit = limit, .exact_condition_limit = std::min<std::size_t>(limit, 40)});
-  Linear_run run;
-  std::string failure;
-  try {
-    run = run_linear_solver(o.method, o.scalar, ref);
-  } catch (const Singular_matrix& e) {
-    if (e.exactly_singular()) throw;
-    failure = e.what();
-  }
-  if (failure.empty() && !run.errors.finite) failure = "the solution has a NaN or infinite entry (overflow)";
-  const bool failed = !failure.empty();
-  const double kappa = ref.condition().value;
-  std::optional<double> bound;
-  if (!failed) {
-    const double ke = kappa * run.errors.normwise_backward_error;
-    if (ke < 1) bound = 2 * ke / (1 - ke);
-  }
-  std::vector<double> exact;
-  if (ref.solution())
-    for (Eigen::Index i = 0; i < ref.size(); ++i) exact.push_back(nearest_double((*ref.solution())(i)));
+  const Linear_outcome outcome = solve_linear_system(o.method, o.scalar, ref);
+  const Linear_run& run = outcome.run;
+  const std::string& failure = outcome.failure;
+  const bool failed = outcome.failed();
+  const double kappa = outcome.condition.value;
+  const std::optional<double>& bound = outcome.forward_error_bound;
+  const std::vector<double>& exact = outcome.exact_solution;
   const std::string scalar_u = format_g(scalar_unit_roundoff(o.scalar), 3);
 
   if (o.format == Format::json) {
-    auto m = [&](double v) { return failed ? Json(nullptr) : measure(v); };
-    const Json j{
-        {"input", name},
-        {"n", ref.size()},
-        {"method", o.method},
-        {"scalar", o.scalar},
-        {"unit_roundoff", scalar_unit_roundoff(o.scalar)},
-        {"status", failed ? "failed" : "ok"},
-        {"failure", failure},
-        {"x", failed ? Json(nullptr) : coordinates_json(run.x)},
-        {"normwise_backward_error", m(run.errors.normwise_backward_error)},
-        {"componentwise_backward_error", m(run.errors.componentwise_backward_error)},
-        {"forward_error", (failed || !run.errors.forward_error) ? Json(nullptr) : measure(*run.errors.forward_error)},
-        {"condition_number", measure(kappa)},
-        {"condition_number_exact", ref.condition().exact},
-        {"forward_error_bound", bound ? Json(*bound) : Json(nullptr)},
-        {"growth_factor", (!failed && run.growth_factor) ? measure(*run.growth_factor) : Json(nullptr)},
-        {"residual_norm", m(run.errors.residual_norm)},
-        {"exact_solution", exact.empty() ? Json(nullptr) : coordinates_json(exact)},
-        {"time_s", failed ? Json(nullptr) : Json(run.time_s)}};
+    Json j{{"input", name}};
+    j.update(linear_outcome_json(outcome, ref));
     out << io::dump_json(j) << '\n';
   } else {
     auto kv = [&](const std::string& k, const std::string& v) {
@@ -188,7 +151,7 @@ int run_linsolve_command(const Linsolve_options& o, Streams io) {
       kv("forward error", run.errors.forward_error ? measure_text(*run.errors.forward_error) + "  (against the exact rational solution)"
                                                    : std::string("not computed (n > --exact-limit)"));
     }
-    kv("condition number", measure_text(kappa) + (ref.condition().exact ? "  (exact)" : "  (Hager-Higham estimate)"));
+    kv("condition number", measure_text(kappa) + (outcome.condition.exact ? "  (exact)" : "  (Hager-Higham estimate)"));
     if (!failed) {
       kv("forward error bound", bound ? measure_text(*bound) + "  (2 kappa eta / (1 - kappa eta))" : std::string("none (kappa eta >= 1)"));
       if (run.growth_factor) kv("growth factor", measure_text(*run.growth_factor));

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "relgeo/io/json.h"
 #include "relgeo/linear/backward_error.h"
 
 namespace relgeo::tool {
@@ -52,5 +53,30 @@ struct Linear_run {
 ///   [dispatch.cpp]
 Linear_run run_linear_solver(std::string_view method, std::string_view scalar, const Linear_reference& ref,
                              double min_seconds = 0);
+
+/// A solve as `relgeo linsolve` reports it: the run or why the method failed,
+/// and what the reference adds.
+struct Linear_outcome {
+  Linear_run run;
+  /// Empty when solved; else a zero pivot of the elimination (not of A: the
+  /// method failed) or a NaN or infinite entry of x (overflow).
+  std::string failure;
+  Condition_number condition;
+  /// 2 kappa eta / (1 - kappa eta), the first-order bound of the forward
+  /// error: when solved and kappa eta < 1.
+  std::optional<double> forward_error_bound;
+  std::vector<double> exact_solution;  ///< rounded to double; empty when `ref` has none
+  bool failed() const { return !failure.empty(); }
+};
+
+/// run_linear_solver once, its failure caught and the measures added.
+/// 	hrows Singular_matrix when A is exactly singular (bad input), Usage_error
+///   for bad names.                                          [facade.cpp]
+Linear_outcome solve_linear_system(std::string_view method, std::string_view scalar, const Linear_reference& ref);
+
+/// The record of `relgeo linsolve --format json` after `input`: n, method,
+/// scalar, unit_roundoff, status, failure, x, the measures, exact_solution,
+/// time_s.                                                   [facade.cpp]
+io::Json linear_outcome_json(const Linear_outcome& outcome, const Linear_reference& ref);
 
 }  // namespace relgeo::tool

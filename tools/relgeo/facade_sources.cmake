@@ -1,8 +1,9 @@
 # tools/relgeo/facade_sources.cmake — the tool's kernel-free facades: non-template
 # functions that take a kernel (or scalar) by name and run the algorithm under
-# it (the dispatch*.cpp files behind them), with the kernel registry and the
-# text helpers they use. The tool compiles them into its executable; the
-# Python module (python/) compiles the same files position-independent.
+# it (the dispatch*.cpp files behind them), with the kernel registry, the
+# text helpers they use and the JSON records of their reports. The tool
+# compiles them into its executable; the Python module (python/) compiles the
+# same files position-independent.
 # Paths relative to tools/relgeo.
 set(relgeo_tool_facade_sources
   cli/text.cpp
@@ -10,5 +11,9 @@ set(relgeo_tool_facade_sources
   commands/orient_grid/dispatch.cpp
   commands/hull/facade.cpp
   commands/hull/dispatch.cpp
+  commands/hull/report.cpp
   commands/linsolve/facade.cpp
-  commands/linsolve/dispatch.cpp)
+  commands/linsolve/dispatch.cpp
+  commands/boolean/names.cpp
+  commands/boolean/dispatch.cpp
+  commands/boolean/report.cpp)

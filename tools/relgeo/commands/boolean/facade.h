@@ -22,13 +22,13 @@ namespace relgeo::tool {
 const std::vector<std::string>& boolean_kernel_names();
 /// Throws Usage_error unless the kernel can run a Boolean.
 void validate_boolean_kernel(const std::string& name);
-/// union | intersection | difference | xor. \throws Usage_error otherwise.  [options.cpp]
+/// union | intersection | difference | xor. \throws Usage_error otherwise.  [names.cpp]
 Boolean_operation parse_boolean_operation(const std::string& name);
-/// repaired | nearest. \throws Usage_error otherwise.  [options.cpp]
+/// repaired | nearest. \throws Usage_error otherwise.  [names.cpp]
 Output_rounding parse_output_rounding(const std::string& name);
 /// --rounding repaired|nearest (boolean and csg).  [options.cpp]
 void add_rounding_option(CLI::App& cmd, std::string& rounding);
-/// delaunay -> true, insertion -> false. \throws Usage_error otherwise.  [options.cpp]
+/// delaunay -> true, insertion -> false. \throws Usage_error otherwise.  [names.cpp]
 bool parse_delaunay_retriangulation(const std::string& name);
 /// --retriangulation delaunay|insertion (boolean and csg).  [options.cpp]
 void add_retriangulation_option(CLI::App& cmd, std::string& retriangulation);

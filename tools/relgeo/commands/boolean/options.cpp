@@ -57,22 +57,10 @@ std::string boolean_help_footer() {
          "boolean, mapping, fitting, distance, validation, layer, total}.\n";
 }
 
-Output_rounding parse_output_rounding(const std::string& name) {
-  if (name == "repaired") return Output_rounding::repaired;
-  if (name == "nearest") return Output_rounding::nearest;
-  throw Usage_error("--rounding must be repaired or nearest (got '" + name + "')");
-}
-
 void add_rounding_option(CLI::App& cmd, std::string& rounding) {
   cmd.add_option("--rounding", rounding,
                  "repaired: repair what rounding to doubles breaks (default); nearest: nearest doubles only")
       ->default_str("repaired");
-}
-
-bool parse_delaunay_retriangulation(const std::string& name) {
-  if (name == "delaunay") return true;
-  if (name == "insertion") return false;
-  throw Usage_error("--retriangulation must be delaunay or insertion (got '" + name + "')");
 }
 
 void add_retriangulation_option(CLI::App& cmd, std::string& retriangulation) {
@@ -80,13 +68,6 @@ void add_retriangulation_option(CLI::App& cmd, std::string& retriangulation) {
                  "delaunay: each split face a constrained Delaunay triangulation (default); insertion: the "
                  "triangulation of the insertion order (needles; for comparison)")
       ->default_str("delaunay");
-}
-
-Boolean_operation parse_boolean_operation(const std::string& name) {
-  for (Boolean_operation op : {Boolean_operation::union_of, Boolean_operation::intersection, Boolean_operation::difference,
-                               Boolean_operation::symmetric_difference})
-    if (name == to_string(op)) return op;
-  throw Usage_error("--op must be union, intersection, difference or xor (got '" + name + "')");
 }
 
 void declare_boolean_options(CLI::App& cmd, Boolean_command_options& o) {

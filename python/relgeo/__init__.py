@@ -13,8 +13,8 @@ import os
 
 import numpy as np
 
-from . import _relgeo
-from .errors import (Error, InvalidInput, InvalidMesh, NonFiniteInput, PreconditionViolation,
+from . import _relgeo, sweep
+from .errors import (Error, InvalidInput, InvalidMesh, InvalidOperand, NonFiniteInput, PreconditionViolation,
                      SingularMatrix, UnreadableFile, UnwritableFile)
 
 NEGATIVE, ZERO, POSITIVE, UNCERTAIN = -1, 0, 1, 2
@@ -25,11 +25,11 @@ DEFAULT_KERNEL = "filtered"
 
 __all__ = [
     "NEGATIVE", "ZERO", "POSITIVE", "UNCERTAIN", "DEFAULT_KERNEL",
-    "kernels", "kernel", "kernel_names",
+    "kernels", "kernel", "kernel_names", "sweep",
     "orient2d", "orient3d", "orientation_grid", "kettner_triples",
     "convex_hull", "solve",
-    "read_mesh", "write_mesh", "validate_solid",
-    "Error", "InvalidInput", "NonFiniteInput", "UnreadableFile", "UnwritableFile", "InvalidMesh",
+    "read_mesh", "write_mesh", "validate_solid", "boolean",
+    "Error", "InvalidInput", "NonFiniteInput", "UnreadableFile", "UnwritableFile", "InvalidMesh", "InvalidOperand",
     "PreconditionViolation", "SingularMatrix",
 ]
 
@@ -172,3 +172,26 @@ def validate_solid(V, F):
     raise ``ValueError``.
     """
     return _relgeo.validate_solid(V, F)
+
+
+# ---- Booleans -------------------------------------------------------------------------
+
+def boolean(A, B, op="union", kernel=DEFAULT_KERNEL, rounding="repaired", retriangulation="delaunay",
+            check_self_intersections=True):
+    """The regularised Boolean of two closed triangle meshes A = (V, F) and
+    B = (V, F) (``relgeo boolean``): op "union" (default), "intersection",
+    "difference" (A - B) or "xor"; exact under the filtered and exact kernels.
+
+    Returns a dict: the result ``V``, ``F`` and ``provenance`` ((m, 2) int64:
+    the operand, 0 = A or 1 = B, and its face each output face comes from),
+    and the fields of ``relgeo boolean --format json``: status ("ok" or
+    "failed") and failure, undecided_pairs, operands, output, validation
+    (the result's Solid_report, as ``validate_solid``), rounding_error,
+    rounding, counts, time_s (per phase).
+    Raises ``InvalidOperand`` (a ``ValueError``) for an operand that is open,
+    non-manifold, misoriented, degenerate or self-intersecting, ``ValueError``
+    for a kernel without implicit points (the list is in the message).
+    The GIL is released during the computation.
+    """
+    (VA, FA), (VB, FB) = A, B
+    return _relgeo.boolean(VA, FA, VB, FB, op, kernel, rounding, retriangulation, check_self_intersections)

@@ -45,6 +45,11 @@ class InvalidMesh(InvalidInput):
     self-intersecting Boolean operand... (relgeo::Invalid_mesh)."""
 
 
+class InvalidOperand(InvalidMesh):
+    """A Boolean operand does not bound a solid: open, non-manifold,
+    misoriented, degenerate or self-intersecting (relgeo::Invalid_operand)."""
+
+
 class PreconditionViolation(Error, ValueError):
     """The call broke a documented precondition (relgeo::Precondition_violation)."""
 
@@ -57,4 +62,4 @@ class SingularMatrix(Error, ValueError, numpy.linalg.LinAlgError):
 
 
 __all__ = ["Error", "InvalidInput", "NonFiniteInput", "UnreadableFile", "UnwritableFile",
-           "InvalidMesh", "PreconditionViolation", "SingularMatrix"]
+           "InvalidMesh", "InvalidOperand", "PreconditionViolation", "SingularMatrix"]

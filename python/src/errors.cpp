@@ -10,6 +10,7 @@
 
 #include "bindings.h"
 #include "cli/text.h"
+#include "relgeo/boolean/boolean_types.h"
 #include "relgeo/io/errors.h"
 #include "relgeo/linear/gaussian_elimination.h"
 #include "relgeo/mesh/mesh_errors.h"
@@ -31,6 +32,8 @@ void translate(std::exception_ptr p) {
     std::rethrow_exception(p);
   } catch (const tool::Usage_error& e) {
     PyErr_SetString(PyExc_ValueError, e.what());
+  } catch (const Invalid_operand& e) {
+    raise_as("InvalidOperand", e);
   } catch (const Invalid_mesh& e) {
     raise_as("InvalidMesh", e);
   } catch (const io::Unwritable_file& e) {

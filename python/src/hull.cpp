@@ -1,11 +1,14 @@
 // python/src/hull.cpp — convex_hull through the tool's hull facade
 // (tools/relgeo/commands/hull/facade.h): the hull, the backward-error
-// certificate and E of eq. (3.2), the fields of `relgeo hull --format json`.
+// certificate and E of eq. (3.2), as the record of `relgeo hull --format
+// json` (commands/hull/report.h).
 #include <string>
 #include <vector>
 
 #include "bindings.h"
 #include "commands/hull/facade.h"
+#include "commands/hull/report.h"
+#include "json_to_python.h"
 #include "kernels/registry.h"
 #include "numpy_arrays.h"
 
@@ -13,34 +16,15 @@ namespace relgeo::python {
 
 namespace {
 
-py::object optional_value(const auto& v) { return v ? py::cast(*v) : py::none(); }
-
+/// The tool's JSON record, with numpy arrays for the hull.
 py::dict hull_dict(const std::string& algorithm, const tool::Kernel_entry& kernel,
                    const std::vector<Point_2<double>>& input, const tool::Hull_evaluation& e) {
-  const tool::Hull_run& r = e.run;
+  auto d = json_to_python(tool::hull_report_json(algorithm, kernel, input, e, /*with_hull=*/false)).cast<py::dict>();
+  const std::vector<std::size_t>& indices = e.run.indices;
   std::vector<double> hull;
-  for (std::size_t i : r.indices) hull.insert(hull.end(), {input[i].x, input[i].y});
-  py::dict d;
-  d["algorithm"] = algorithm;
-  d["kernel"] = kernel.label();
-  d["kernel_model"] = kernel.name;
-  d["certified"] = kernel.certified;
-  d["n"] = input.size();
-  d["status"] = r.status == Hull_status::ok ? "ok" : "failed";
-  d["failure"] = r.status == Hull_status::ok ? py::none() : py::cast(r.failure);
-  d["hull_size"] = r.indices.size();
-  d["hull_indices"] = vector_array<std::int64_t>(r.indices);
-  d["hull"] = matrix_array<double>(hull, r.indices.size(), 2);
-  d["convex"] = e.error.convex;
-  d["error"] = e.error.value;
-  d["backward_error"] = e.backward.value;
-  d["backward_error_bound"] = optional_value(r.backward_error_bound);
-  d["coordinate_bound"] = e.error.coordinate_bound;
-  d["moved_points"] = e.backward.moved_points.size();
-  d["worst_point"] = optional_value(e.backward.worst_point);
-  d["uncertain_answers"] = r.uncertain_answers;
-  d["predicate_calls"] = r.predicate_calls_counted ? py::cast(r.predicate_calls) : py::none();
-  d["time_s"] = r.time_s;
+  for (std::size_t i : indices) hull.insert(hull.end(), {input[i].x, input[i].y});
+  d["hull_indices"] = vector_array<std::int64_t>(indices);
+  d["hull"] = matrix_array<double>(hull, indices.size(), 2);
   return d;
 }
 

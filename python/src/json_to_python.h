@@ -9,6 +9,9 @@
 
 namespace relgeo::python {
 
+/// Objects, arrays, numbers, booleans and null as json.loads gives them;
+/// coordinates (io::json_coordinate) as the floats the JSON text holds, and
+/// infinite measures (io::json_measure's "inf", "-inf") as float infinities.
 pybind11::object json_to_python(const io::Json& j);
 
 }  // namespace relgeo::python

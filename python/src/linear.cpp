@@ -1,7 +1,7 @@
 // python/src/linear.cpp — solve(A, b) through the tool's linsolve facade
 // (tools/relgeo/commands/linsolve/facade.h): the solution and its backward
-// errors measured exactly against the problem's data, as `relgeo linsolve`
-// reports them.
+// errors measured exactly against the problem's data, as the record of
+// `relgeo linsolve --format json`.
 #include <algorithm>
 #include <optional>
 #include <string>
@@ -9,8 +9,8 @@
 
 #include "bindings.h"
 #include "commands/linsolve/facade.h"
+#include "json_to_python.h"
 #include "numpy_arrays.h"
-#include "relgeo/core/number_traits.h"
 
 namespace relgeo::python {
 
@@ -33,37 +33,11 @@ Dense_vector<double> dense_vector(const Double_array& b) {
   return v;
 }
 
-py::object measure_or_none(bool solved, double v) { return solved ? py::cast(v) : py::none(); }
-
-/// The fields of `relgeo linsolve --format json` (floats, inf as inf).
-py::dict solve_dict(const tool::Linear_run& run, const std::string& failure, const Linear_reference& ref) {
-  const bool solved = failure.empty();
-  const double kappa = ref.condition().value;
-  // The classical first-order bound ||x~ - x|| / ||x|| <= 2 kappa eta / (1 - kappa eta), kappa eta < 1.
-  const double kappa_eta = kappa * run.errors.normwise_backward_error;
-  py::dict d;
-  d["status"] = solved ? "ok" : "failed";
-  d["failure"] = failure;
-  d["n"] = ref.size();
-  d["method"] = run.method;
-  d["scalar"] = run.scalar;
-  d["x"] = solved ? py::object(vector_array<double>(run.x)) : py::none();
-  d["normwise_backward_error"] = measure_or_none(solved, run.errors.normwise_backward_error);
-  d["componentwise_backward_error"] = measure_or_none(solved, run.errors.componentwise_backward_error);
-  d["forward_error"] = solved && run.errors.forward_error ? py::cast(*run.errors.forward_error) : py::none();
-  d["condition_number"] = kappa;
-  d["condition_number_exact"] = ref.condition().exact;
-  d["forward_error_bound"] = solved && kappa_eta < 1 ? py::cast(2 * kappa_eta / (1 - kappa_eta)) : py::none();
-  d["growth_factor"] = solved && run.growth_factor ? py::cast(*run.growth_factor) : py::none();
-  d["residual_norm"] = measure_or_none(solved, run.errors.residual_norm);
-  if (ref.solution()) {
-    std::vector<double> exact;
-    for (Eigen::Index i = 0; i < ref.size(); ++i) exact.push_back(nearest_double((*ref.solution())(i)));
-    d["exact_solution"] = vector_array<double>(exact);
-  } else {
-    d["exact_solution"] = py::none();
-  }
-  d["time_s"] = measure_or_none(solved, run.time_s);
+/// The tool's JSON record, with numpy arrays for x and the exact solution.
+py::dict solve_dict(const tool::Linear_outcome& outcome, const Linear_reference& ref) {
+  auto d = json_to_python(tool::linear_outcome_json(outcome, ref)).cast<py::dict>();
+  if (!outcome.failed()) d["x"] = vector_array<double>(outcome.run.x);
+  if (!outcome.exact_solution.empty()) d["exact_solution"] = vector_array<double>(outcome.exact_solution);
   return d;
 }
 
@@ -80,24 +54,16 @@ void bind_linear(py::module_& m) {
         const Dense_vector<double> bv = dense_vector(b);
         const auto limit = static_cast<std::size_t>(exact_limit);
         std::optional<Linear_reference> ref;
-        tool::Linear_run run;
-        run.method = method, run.scalar = scalar;  // reported when the solve fails
-        std::string failure;
+        std::optional<tool::Linear_outcome> outcome;
         {
           py::gil_scoped_release release;
           // Throws Singular_matrix (exactly singular: bad input) before any solve.
           ref.emplace(am, bv,
                       Linear_reference_options{.exact_solution_limit = limit,
                                                .exact_condition_limit = std::min<std::size_t>(limit, 40)});
-          try {
-            run = tool::run_linear_solver(method, scalar, *ref);
-          } catch (const Singular_matrix& e) {
-            if (e.exactly_singular()) throw;
-            failure = e.what();  // a zero pivot of the elimination, not of A: the method failed
-          }
+          outcome = tool::solve_linear_system(method, scalar, *ref);
         }
-        if (failure.empty() && !run.errors.finite) failure = "the solution has a NaN or infinite entry (overflow)";
-        return solve_dict(run, failure, *ref);
+        return solve_dict(*outcome, *ref);
       },
       py::arg("A"), py::arg("b"), py::arg("method"), py::arg("scalar"), py::arg("exact_limit"),
       "The tool's `linsolve` on A x = b: x rounded to double, both backward errors, the forward error, the "

@@ -11,4 +11,5 @@ PYBIND11_MODULE(_relgeo, m) {
   relgeo::python::bind_hull(m);
   relgeo::python::bind_linear(m);
   relgeo::python::bind_mesh(m);
+  relgeo::python::bind_boolean(m);
 }

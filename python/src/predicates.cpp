@@ -1,5 +1,6 @@
 // python/src/predicates.cpp — orient2d / orient3d over (n, 2) / (n, 3)
 // arrays, and Kettner's orientation grids (the tool's `orient-grid`).
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "numpy_arrays.h"
 #include "predicates_dispatch.h"
 #include "relgeo/analysis/predicate_workloads.h"
+#include "relgeo/analysis/sign_tally.h"
 
 namespace relgeo::python {
 
@@ -31,6 +33,20 @@ py::array_t<std::int8_t> orientation_signs(const Signs& signs, const std::string
   return out;
 }
 
+/// The counts of relgeo::analysis::Sign_tally, named as the tool names them.
+py::dict tally_dict(const analysis::Sign_tally& t) {
+  py::dict d;
+  d["cells"] = t.cases;
+  d["correct"] = t.correct;
+  d["uncertain"] = t.uncertain;
+  d["wrong"] = t.wrong();
+  d["plus_to_zero"] = t.plus_to_zero;
+  d["minus_to_zero"] = t.minus_to_zero;
+  d["zero_to_sign"] = t.zero_to_sign;
+  d["inversions"] = t.inversions;
+  return d;
+}
+
 py::dict grid_dict(const analysis::Orientation_grid_result& g) {
   const auto n = static_cast<std::size_t>(g.size);
   py::dict d;
@@ -41,15 +57,30 @@ py::dict grid_dict(const analysis::Orientation_grid_result& g) {
   d["r"] = py::make_tuple(g.triple.rx, g.triple.ry);
   d["answers"] = matrix_array<std::int8_t>(g.answers, n, n);
   d["exact"] = matrix_array<std::int8_t>(g.exact, n, n);
-  d["cells"] = g.tally.cases;
-  d["correct"] = g.tally.correct;
-  d["uncertain"] = g.tally.uncertain;
-  d["wrong"] = g.tally.wrong();
-  d["plus_to_zero"] = g.tally.plus_to_zero;
-  d["minus_to_zero"] = g.tally.minus_to_zero;
-  d["zero_to_sign"] = g.tally.zero_to_sign;
-  d["inversions"] = g.tally.inversions;
+  d.attr("update")(tally_dict(g.tally));
   return d;
+}
+
+/// The coordinates of a case, point after point.
+std::array<double, 6> case_coordinates(const analysis::Orientation_2_case& c) {
+  return {c.px, c.py, c.qx, c.qy, c.rx, c.ry};
+}
+const std::array<double, 12>& case_coordinates(const analysis::Orientation_3_case& c) { return c.c; }
+
+/// A workload's cases as one (n, Dimension) array per point: (p, q, r) or (p, q, r, s).
+template <std::size_t Dimension, class Case>
+py::tuple workload_arrays(const std::vector<Case>& cases) {
+  constexpr std::size_t points = Dimension + 1;
+  py::tuple out(points);
+  for (std::size_t k = 0; k < points; ++k) {
+    py::array_t<double> a({static_cast<py::ssize_t>(cases.size()), static_cast<py::ssize_t>(Dimension)});
+    double* data = a.mutable_data();
+    for (std::size_t i = 0; i < cases.size(); ++i)
+      for (std::size_t j = 0; j < Dimension; ++j)
+        data[i * Dimension + j] = case_coordinates(cases[i])[k * Dimension + j];
+    out[k] = a;
+  }
+  return out;
 }
 
 }  // namespace
@@ -71,6 +102,42 @@ void bind_predicates(py::module_& m) {
       py::arg("p"), py::arg("q"), py::arg("r"), py::arg("s"), py::arg("kernel"),
       "Signs (int8: -1, 0, 1, 2 = uncertain) of orientation_3 over four (n, 3) arrays.");
 
+  m.def(
+      "orientation_workloads",
+      [](int dimension, std::size_t n, std::uint64_t seed) {
+        py::dict d;
+        if (dimension == 2) {
+          for (const auto& w : analysis::standard_workloads_2(n, seed))
+            d[py::str(w.name)] = workload_arrays<2>(w.cases);
+        } else if (dimension == 3) {
+          for (const auto& w : analysis::standard_workloads_3(n, seed))
+            d[py::str(w.name)] = workload_arrays<3>(w.cases);
+        } else {
+          throw py::value_error("orientation_workloads: dimension must be 2 or 3");
+        }
+        return d;
+      },
+      py::arg("dimension"), py::arg("n"), py::arg("seed"),
+      "relgeo::analysis::standard_workloads_2/3(n, seed): {name: (p, q, r[, s])} of (n, dimension) arrays, the "
+      "families of the tool's experiment and the predicate benchmark.");
+  m.def(
+      "sign_tally",
+      [](const py::array_t<std::int8_t, py::array::forcecast>& answers,
+         const py::array_t<std::int8_t, py::array::forcecast>& exact) {
+        if (answers.ndim() != 1 || exact.ndim() != 1 || answers.shape(0) != exact.shape(0))
+          throw py::value_error("sign_tally: answers and exact must be 1-d arrays of one length");
+        const auto a = answers.unchecked<1>();
+        const auto e = exact.unchecked<1>();
+        analysis::Sign_tally t;
+        for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+          if (a(i) < -1 || a(i) > 2 || e(i) < -1 || e(i) > 2)
+            throw py::value_error("sign_tally: signs are -1, 0, 1 or 2 (uncertain)");
+          t.add(static_cast<Certified_sign>(e(i)), static_cast<Certified_sign>(a(i)));
+        }
+        return tally_dict(t);
+      },
+      py::arg("answers"), py::arg("exact"),
+      "relgeo::analysis::Sign_tally of a kernel's signs against the exact ones (the counts of orientation_grid).");
   m.def(
       "kettner_triples",
       [] {

@@ -23,7 +23,8 @@ class Tool:
         return done
 
     def json(self, *args, expect_codes=(0,)):
-        return json.loads(self.run(*args, "--format", "json", expect_codes=expect_codes).stdout)
+        """The JSON record, its infinite measures ("inf") as floats, as the bindings give them."""
+        return measures(json.loads(self.run(*args, "--format", "json", expect_codes=expect_codes).stdout))
 
     def error(self, *args):
         """The one-line message of a usage error (exit 2), without 'relgeo: error: '."""
@@ -39,6 +40,11 @@ def tool():
     return Tool(path)
 
 
-def measure(value):
-    """A measure of the tool's JSON ("inf" for infinity) as a float."""
-    return float("inf") if value == "inf" else value
+def measures(value):
+    """A JSON value with the strings "inf" and "-inf" (io::json_measure's
+    infinities) as floats, everywhere in it."""
+    if isinstance(value, dict):
+        return {k: measures(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [measures(v) for v in value]
+    return float(value) if value in ("inf", "-inf") else value

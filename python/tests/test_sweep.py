@@ -1,0 +1,119 @@
+"""relgeo.sweep on Dask: the table of a 2-worker LocalCluster and of a
+scheduler started here equal the serial run's; a failing task is a row."""
+
+import os
+import socket
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+
+import relgeo
+from relgeo import sweep
+
+distributed = pytest.importorskip("dask.distributed")
+
+# Dask 2022.12 on tornado 6.2 warns from inside its event loop.
+pytestmark = pytest.mark.filterwarnings("ignore:make_current is deprecated:DeprecationWarning")
+
+KERNELS = ["double", "failsafe", "interval", "filtered"]
+
+
+def deterministic(rows):
+    return [{k: v for k, v in row.items() if k not in sweep.TIMING_COLUMNS} for row in rows]
+
+
+@pytest.fixture(scope="module")
+def serial_rows():
+    return sweep.orientation_sweep(KERNELS, sizes=[3000], shards=2, scheduler="serial")
+
+
+def test_serial_table_is_complete_and_agrees_with_the_predicates(serial_rows):
+    workloads = sweep.orientation_workload_names()
+    assert len(workloads) == 4 and "uniform" in workloads
+    assert len(serial_rows) == len(workloads) * 2 * len(KERNELS)
+    assert all(row["error"] is None for row in serial_rows)
+    assert sum(row["cases"] for row in serial_rows if row["kernel"] == "double") == 4 * 3000
+    for row in serial_rows:
+        assert row["cells"] == row["cases"] == row["correct"] + row["uncertain"] + row["wrong"]
+        if relgeo.kernel(row["kernel"])["certified"]:
+            assert row["wrong"] == 0
+    # the near-degenerate families are hard: double errs and failsafe admits it
+    assert any(r["wrong"] > 0 for r in serial_rows if r["kernel"] == "double")
+    assert any(r["uncertain"] > 0 for r in serial_rows if r["kernel"] == "failsafe")
+    # a row is what the bindings compute on the same workload
+    row = next(r for r in serial_rows if r["kernel"] == "double" and r["workload"] == "near-collinear")
+    points = relgeo._relgeo.orientation_workloads(2, row["cases"], row["seed"])["near-collinear"]
+    expected = relgeo._relgeo.sign_tally(relgeo.orient2d(*points, kernel="double"),
+                                         relgeo.orient2d(*points, kernel="exact"))
+    assert {k: row[k] for k in sweep.ORIENTATION_COUNTS} == expected
+
+
+def test_local_cluster_table_equals_the_serial_one(serial_rows):
+    rows = sweep.orientation_sweep(KERNELS, sizes=[3000], shards=2, n_workers=2, progress=False)
+    assert deterministic(rows) == deterministic(serial_rows)
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def test_scheduler_and_two_workers_started_here(serial_rows):
+    address = f"tcp://127.0.0.1:{free_port()}"
+    bin_dir = os.path.dirname(sys.executable)
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))  # the workers import relgeo as this test does
+    scheduler = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler", "--host", "127.0.0.1",
+                                  "--port", address.rsplit(":", 1)[1], "--no-dashboard"],
+                                 env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    workers = [subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker", address, "--nworkers", "1",
+                                 "--nthreads", "1", "--no-dashboard"],
+                                env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL) for _ in range(2)]
+    try:
+        with distributed.Client(address, timeout=60) as client:
+            client.wait_for_workers(2, timeout=60)
+        rows = sweep.orientation_sweep(KERNELS, sizes=[3000], shards=2, scheduler=address, progress=False)
+        assert deterministic(rows) == deterministic(serial_rows)
+    finally:
+        for p in workers + [scheduler]:
+            p.terminate()
+        for p in workers + [scheduler]:
+            p.wait(timeout=30)
+
+
+def test_a_failing_task_is_a_row_not_a_failure():
+    rows = sweep.orientation_sweep(["double", "no-such-kernel"], sizes=[500], workloads=["uniform"],
+                                   n_workers=2, progress=False)
+    assert [r["kernel"] for r in rows] == ["double", "no-such-kernel"]
+    assert rows[0]["error"] is None and rows[0]["cells"] == 500
+    assert rows[1]["error"].startswith("ValueError: unknown kernel 'no-such-kernel'")
+    assert "cells" not in rows[1]
+
+
+def die_on_second_task(task):
+    if task["kernel"] == "filtered":
+        os._exit(3)  # the worker process dies, not just the task
+    return sweep.run_orientation_task(task)
+
+
+def test_a_dying_worker_is_a_row_not_a_failure():
+    import cloudpickle
+    import dask
+
+    cloudpickle.register_pickle_by_value(sys.modules[__name__])  # the workers cannot import this test file
+
+    tasks = sweep.orientation_tasks(["double", "filtered"], sizes=[200], workloads=["uniform"])
+    with dask.config.set({"distributed.scheduler.allowed-failures": 0}):
+        rows = sweep.run_tasks(die_on_second_task, tasks, n_workers=2, progress=False)
+    assert rows[0]["error"] is None and rows[0]["cells"] == 200
+    assert rows[1]["kernel"] == "filtered" and "KilledWorker" in rows[1]["error"]
+
+
+def test_records(serial_rows):
+    table = sweep.as_records(serial_rows)
+    assert len(table) == len(serial_rows)
+    assert table.wrong.dtype == np.int64 and table.ns_per_call.dtype == np.float64
+    assert list(table.kernel[:4]) == KERNELS

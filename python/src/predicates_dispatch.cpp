@@ -2,7 +2,8 @@
 // kernel of the tool's list (CGAL Epeck included).
 #include "predicates_dispatch.h"
 
-#include <cmath>
+#include <algorithm>
+#include <bit>
 #include <string>
 
 #include "kernels/cgal_kernels.h"
@@ -13,17 +14,60 @@ namespace relgeo::python {
 
 namespace {
 
-/// Kernels answer NaN inputs in their own ways (the naive ones with a sign):
-/// refuse them before any kernel sees them.
+/// Kernels answer NaN inputs in their own ways (the naive ones with a sign,
+/// the exact one cannot convert them): every coordinate is checked before
+/// any kernel sees one. The check runs on blocks small enough to stay in the
+/// L1 cache for the predicates that follow, without a branch per coordinate:
+/// a test per tuple inside the predicate loop, or a pass of its own over the
+/// whole arrays, each cost more than the double kernel's predicate itself
+/// (5.8 and 5.1 against 2.3 ns per call).
+constexpr std::size_t block_size = 256;
+
+/// Finite: the exponent bits are not all ones (integer operations).
+inline bool is_finite(double v) {
+  constexpr std::uint64_t exponent = 0x7ff0000000000000;
+  return (std::bit_cast<std::uint64_t>(v) & exponent) != exponent;
+}
+
 template <int Dimension, class... Rows>
 bool finite_tuple(std::size_t i, const Rows&... rows) {
   bool finite = true;
-  for (int j = 0; j < Dimension; ++j) finite = (finite && ... && std::isfinite(rows(i, j)));
+  for (int j = 0; j < Dimension; ++j) finite = (finite & ... & is_finite(rows(i, j)));
   return finite;
 }
 
-[[noreturn]] void throw_non_finite(const char* who, std::size_t i) {
-  throw Non_finite_input(std::string(who) + ": tuple " + std::to_string(i) + " has a NaN or infinite coordinate");
+/// Whether count doubles from v are all finite: one branch-free pass over
+/// the high words (a 64-bit compare does not vectorise on x86-64's baseline
+/// SSE2; this does: 1.1 ns per triple, against 3.7).
+bool all_finite(const double* v, std::size_t count) {
+  constexpr std::uint32_t exponent = 0x7ff00000;
+  std::uint32_t special = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto high = static_cast<std::uint32_t>(std::bit_cast<std::uint64_t>(v[k]) >> 32);
+    special |= static_cast<std::uint32_t>((high & exponent) == exponent);
+  }
+  return special == 0;
+}
+
+/// Whether rows [begin, end) of `rows` are finite.
+template <int Dimension>
+bool rows_finite(const Coordinate_rows& rows, std::size_t begin, std::size_t end) {
+  if (rows.row_stride == 0) return finite_tuple<Dimension>(0, rows);  // broadcast: one row
+  if (rows.column_stride == 1 && rows.row_stride == Dimension)
+    return all_finite(rows.data + begin * Dimension, (end - begin) * Dimension);
+  bool finite = true;
+  for (std::size_t i = begin; i < end; ++i) finite &= finite_tuple<Dimension>(i, rows);
+  return finite;
+}
+
+/// Throws Non_finite_input naming the first tuple of [begin, end) with a NaN
+/// or infinite coordinate.
+template <int Dimension, class... Rows>
+void require_finite_tuples(const char* who, std::size_t begin, std::size_t end, const Rows&... rows) {
+  if ((rows_finite<Dimension>(rows, begin, end) && ...)) return;
+  for (std::size_t i = begin; i < end; ++i)
+    if (!finite_tuple<Dimension>(i, rows...))
+      throw Non_finite_input(std::string(who) + ": tuple " + std::to_string(i) + " has a NaN or infinite coordinate");
 }
 
 }  // namespace
@@ -33,10 +77,12 @@ void orientation_2_signs(std::string_view kernel, Coordinate_rows p, Coordinate_
   tool::with_kernel(kernel, [&]<class K>(const K& k) {
     const auto point = k.construct_point_2_object();
     const auto orientation = k.orientation_2_object();
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!finite_tuple<2>(i, p, q, r)) throw_non_finite("orient2d", i);
-      out[i] = static_cast<std::int8_t>(
-          orientation(point(p(i, 0), p(i, 1)), point(q(i, 0), q(i, 1)), point(r(i, 0), r(i, 1))));
+    for (std::size_t begin = 0; begin < n; begin += block_size) {
+      const std::size_t end = std::min(n, begin + block_size);
+      require_finite_tuples<2>("orient2d", begin, end, p, q, r);
+      for (std::size_t i = begin; i < end; ++i)
+        out[i] = static_cast<std::int8_t>(
+            orientation(point(p(i, 0), p(i, 1)), point(q(i, 0), q(i, 1)), point(r(i, 0), r(i, 1))));
     }
   });
 }
@@ -46,11 +92,13 @@ void orientation_3_signs(std::string_view kernel, Coordinate_rows p, Coordinate_
   tool::with_kernel(kernel, [&]<class K>(const K& k) {
     const auto point = k.construct_point_3_object();
     const auto orientation = k.orientation_3_object();
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!finite_tuple<3>(i, p, q, r, s)) throw_non_finite("orient3d", i);
-      out[i] =
-          static_cast<std::int8_t>(orientation(point(p(i, 0), p(i, 1), p(i, 2)), point(q(i, 0), q(i, 1), q(i, 2)),
-                                               point(r(i, 0), r(i, 1), r(i, 2)), point(s(i, 0), s(i, 1), s(i, 2))));
+    for (std::size_t begin = 0; begin < n; begin += block_size) {
+      const std::size_t end = std::min(n, begin + block_size);
+      require_finite_tuples<3>("orient3d", begin, end, p, q, r, s);
+      for (std::size_t i = begin; i < end; ++i)
+        out[i] =
+            static_cast<std::int8_t>(orientation(point(p(i, 0), p(i, 1), p(i, 2)), point(q(i, 0), q(i, 1), q(i, 2)),
+                                                 point(r(i, 0), r(i, 1), r(i, 2)), point(s(i, 0), s(i, 1), s(i, 2))));
     }
   });
 }

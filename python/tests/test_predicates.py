@@ -151,6 +151,19 @@ def test_non_finite_coordinates_raise(bad):
         assert isinstance(e.value, ValueError) and e.value.code == "non_finite_coordinate"
     with pytest.raises(relgeo.NonFiniteInput, match="orient3d: tuple 0"):
         relgeo.orient3d([bad, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1])
+    # every layout the check reads: a later block, a broadcast point, strided rows
+    many = np.zeros((1000, 2))
+    many[700, 0] = bad
+    with pytest.raises(relgeo.NonFiniteInput, match="tuple 700 "):
+        relgeo.orient2d([1, 0], many, [0, 1])
+    with pytest.raises(relgeo.NonFiniteInput, match="tuple 0 "):
+        relgeo.orient2d([bad, 0], np.zeros((10, 2)), np.ones((10, 2)))
+    strided = np.zeros((600, 6))
+    strided[599, 4] = bad
+    with pytest.raises(relgeo.NonFiniteInput, match="tuple 599 "):
+        relgeo.orient2d(strided[:, ::2][:, 1:], np.zeros((600, 2)), np.ones((600, 2)), kernel="exact")
+    with pytest.raises(relgeo.NonFiniteInput, match="orient3d: tuple 599 "):
+        relgeo.orient3d(np.zeros((600, 3)), np.ones((600, 3)), strided[:, 2:5], np.eye(3)[[0] * 600])
 
 
 def test_wrong_shapes_raise_value_error():

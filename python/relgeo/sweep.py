@@ -12,6 +12,10 @@ table: a list of dicts, one row a task, in the grid's order.
 
 A task that raises, or whose worker dies, gives a row with ``error`` set
 (the exception's type and message) and no counts; the others still run.
+
+A script that starts the embedded LocalCluster must do so under
+``if __name__ == "__main__":`` (Dask's worker processes re-import the main
+module).
 """
 
 import contextlib

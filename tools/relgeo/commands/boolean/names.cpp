@@ -7,8 +7,8 @@
 namespace relgeo::tool {
 
 Boolean_operation parse_boolean_operation(const std::string& name) {
-  for (Boolean_operation op : {Boolean_operation::union_of, Boolean_operation::intersection, Boolean_operation::difference,
-                               Boolean_operation::symmetric_difference})
+  for (Boolean_operation op : {Boolean_operation::union_of, Boolean_operation::intersection,
+                               Boolean_operation::difference, Boolean_operation::symmetric_difference})
     if (name == to_string(op)) return op;
   throw Usage_error("--op must be union, intersection, difference or xor (got '" + name + "')");
 }

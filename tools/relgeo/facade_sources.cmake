@@ -14,6 +14,8 @@ set(relgeo_tool_facade_sources
   commands/hull/report.cpp
   commands/linsolve/facade.cpp
   commands/linsolve/dispatch.cpp
+  commands/extrusion/dispatch.cpp
+  commands/extrusion/report.cpp
   commands/boolean/names.cpp
   commands/boolean/dispatch.cpp
   commands/boolean/report.cpp)

@@ -28,12 +28,7 @@ int run_extrusion_command(const Extrusion_command_options& o, Streams io) {
   const io::Contour_input input = o.input == "-" ? io::parse_contour_json(io::read_text_stream(io.in), source, overrides)
                                                  : io::read_contour_json(o.input, overrides);
 
-  Extrusion_options options;
-  options.relative_uncertainty = input.relative_uncertainty;
-  options.absolute_uncertainty = input.absolute_uncertainty;
-  options.rotation_error = input.projection ? input.projection->rotation_error : 0.0;
-  options.prune = !o.no_prune;
-  options.max_listed = static_cast<std::size_t>(o.max_listed);
+  const Extrusion_options options = extrusion_options_for(input, !o.no_prune, static_cast<std::size_t>(o.max_listed));
   double time_s = 0;
   const Extrusion_report r = run_extrusion(o.algorithm, o.kernel, *input.contour, options, &time_s);
   if (!o.svg.empty())

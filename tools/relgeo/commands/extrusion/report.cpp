@@ -1,5 +1,6 @@
 // tools/relgeo/commands/extrusion/report.cpp — the extrusion command's
-// report and picture (no kernel instantiation: see dispatch.cpp).
+// options from a contour file, report and picture (no kernel instantiation:
+// see dispatch.cpp).
 #include "commands/extrusion/report.h"
 
 #include <algorithm>
@@ -12,6 +13,16 @@
 #include "relgeo/io/svg_canvas.h"
 
 namespace relgeo::tool {
+
+Extrusion_options extrusion_options_for(const io::Contour_input& input, bool prune, std::size_t max_listed) {
+  Extrusion_options options;
+  options.relative_uncertainty = input.relative_uncertainty;
+  options.absolute_uncertainty = input.absolute_uncertainty;
+  options.rotation_error = input.projection ? input.projection->rotation_error : 0.0;
+  options.prune = prune;
+  options.max_listed = max_listed;
+  return options;
+}
 
 namespace {
 

@@ -2,6 +2,7 @@
 // reports it: JSON, readable text, SVG picture.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -10,6 +11,11 @@
 #include "relgeo/io/json.h"
 
 namespace relgeo::tool {
+
+/// The options `relgeo extrusion` checks a contour file with: its
+/// uncertainties and the rotation error of its plane, pruning, the cap on
+/// the listed problems.
+Extrusion_options extrusion_options_for(const io::Contour_input& input, bool prune, std::size_t max_listed);
 
 /// The JSON report (fields: extrusion_help_footer()).
 io::Json extrusion_report_json(const io::Contour_input& in, std::string_view kernel, std::string_view algorithm,

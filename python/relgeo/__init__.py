@@ -9,6 +9,7 @@ that knows it cannot decide (failsafe, interval). Bad input raises a
 ``relgeo.Error`` subclass (``relgeo.errors``) carrying relgeo's message.
 """
 
+import json
 import os
 
 import numpy as np
@@ -28,7 +29,7 @@ __all__ = [
     "kernels", "kernel", "kernel_names", "sweep",
     "orient2d", "orient3d", "orientation_grid", "kettner_triples",
     "convex_hull", "solve",
-    "read_mesh", "write_mesh", "validate_solid", "boolean",
+    "read_mesh", "write_mesh", "validate_solid", "boolean", "check_extrusion",
     "Error", "InvalidInput", "NonFiniteInput", "UnreadableFile", "UnwritableFile", "InvalidMesh", "InvalidOperand",
     "PreconditionViolation", "SingularMatrix",
 ]
@@ -195,3 +196,25 @@ def boolean(A, B, op="union", kernel=DEFAULT_KERNEL, rounding="repaired", retria
     """
     (VA, FA), (VB, FB) = A, B
     return _relgeo.boolean(VA, FA, VB, FB, op, kernel, rounding, retriangulation, check_self_intersections)
+
+
+# ---- extrusion ------------------------------------------------------------------------
+
+def check_extrusion(contour, algorithm="graham-fortune", kernel="failsafe", uncertainty=None,
+                    absolute_uncertainty=None, prune=True, max_listed=50):
+    """Certified well-formedness of an extruded object (thesis Sec. 3.4.1,
+    ``relgeo extrusion``): its contour, a path to a contour JSON file or the
+    same document as a dict (format: ``relgeo help extrusion``).
+
+    Defaults are the tool's: kernel "failsafe", algorithm "graham-fortune",
+    uncertainties from the contour (else 1e-3 relative, 0 absolute).
+    Returns the record of ``relgeo extrusion --format json`` as a dict
+    (verdict, conditions with their margins, offending problems...).
+    Raises ``UnreadableFile`` / ``InvalidInput`` / ``NonFiniteInput`` for a
+    bad contour, ``ValueError`` for a bad name.
+    """
+    if isinstance(contour, dict):
+        return _relgeo.check_extrusion("<dict>", json.dumps(contour), algorithm, kernel, uncertainty,
+                                       absolute_uncertainty, prune, max_listed)
+    return _relgeo.check_extrusion(os.fspath(contour), None, algorithm, kernel, uncertainty, absolute_uncertainty,
+                                   prune, max_listed)

@@ -12,4 +12,5 @@ PYBIND11_MODULE(_relgeo, m) {
   relgeo::python::bind_linear(m);
   relgeo::python::bind_mesh(m);
   relgeo::python::bind_boolean(m);
+  relgeo::python::bind_extrusion(m);
 }

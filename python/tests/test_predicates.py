@@ -190,3 +190,16 @@ def test_orientation_grid_bad_input(tool):
     expected = tool.json("orient-grid", "--p", "0.5,0.5", "--q", "12,12", "--r", "24,24", "--kernel", "double",
                          "--size", 8)
     assert {k: custom[k] for k in COUNTS} == {k: expected[k] for k in COUNTS}
+
+
+def test_sign_tally_checks_its_input():
+    assert relgeo._relgeo.sign_tally([1, 0, 2, -1], [1, 1, 0, 1]) == {
+        "cells": 4, "correct": 1, "uncertain": 1, "wrong": 2, "plus_to_zero": 1, "minus_to_zero": 0,
+        "zero_to_sign": 0, "inversions": 1}
+    with pytest.raises(relgeo.PreconditionViolation, match="exact sign is uncertain") as e:
+        relgeo._relgeo.sign_tally([1], [2])  # an exact sign must be definite
+    assert isinstance(e.value, ValueError) and e.value.code == "precondition_violation"
+    with pytest.raises(ValueError, match="signs are -1, 0, 1 or 2"):
+        relgeo._relgeo.sign_tally([5], [1])
+    with pytest.raises(ValueError, match="one length"):
+        relgeo._relgeo.sign_tally([1, 1], [1])

@@ -16,6 +16,8 @@ set(relgeo_tool_facade_sources
   commands/linsolve/dispatch.cpp
   commands/extrusion/dispatch.cpp
   commands/extrusion/report.cpp
+  commands/subdivide/dispatch_float.cpp
+  commands/subdivide/dispatch_exact.cpp
   commands/boolean/names.cpp
   commands/boolean/dispatch.cpp
   commands/boolean/report.cpp)

@@ -76,11 +76,11 @@ int run_subdivide_command(const Subdivide_options& options, Streams io) {
   Subdivide_options o = options;
   if (o.input.empty()) throw Usage_error("no mesh file: give it as 'relgeo subdivide FILE' or --input FILE ('-': OFF on standard input)");
   if (o.output.empty()) o.output = default_subdivide_output(o);
-  if (o.levels < 0 || o.levels > 12) throw Usage_error("--levels must be in 0..12");
+  const unsigned levels = subdivision_levels(o.levels);
   if (o.samples < 0 || o.samples > 256 || (o.samples & (o.samples - 1)) != 0)
     throw Usage_error("--samples must be 0 or a power of two up to 256");
   validate_subdivision_kernel(o.kernel);
-  if (o.rules != "hoppe" && o.rules != "blz") throw Usage_error("--rules must be hoppe or blz");
+  const Loop_crease_rules rules = parse_crease_rules(o.rules);
   // Read (stdin: OFF through a temporary file, CGAL's reader wants a path).
   std::string path = o.input;
   std::filesystem::path tmp;
@@ -100,8 +100,8 @@ int run_subdivide_command(const Subdivide_options& options, Streams io) {
 
   Subdivision_request rq;
   rq.kernel = o.kernel;
-  rq.levels = unsigned(o.levels);
-  rq.options.crease_rules = o.rules == "blz" ? Loop_crease_rules::biermann_levin_zorin : Loop_crease_rules::hoppe;
+  rq.levels = levels;
+  rq.options.crease_rules = rules;
   rq.bounds = o.bounds;
   rq.samples = o.samples;
   const Subdivision_result r = run_subdivision(mesh, rq);

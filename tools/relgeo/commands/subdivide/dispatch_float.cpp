@@ -1,7 +1,7 @@
 // tools/relgeo/commands/subdivide/dispatch_float.cpp — run_subdivision under
 // the kernels with float, double or long double coordinates, the kernel list
-// of `subdivide`, and the dyadic sample grid. The interval, exact and MPFR
-// kernels are in dispatch_exact.cpp.
+// of `subdivide`, its levels and crease rules, and the dyadic sample grid.
+// The interval, exact and MPFR kernels are in dispatch_exact.cpp.
 #include "cli/text.h"
 #include "commands/subdivide/run_with.h"
 
@@ -19,6 +19,17 @@ void validate_subdivision_kernel(const std::string& name) {
     if (n == k.label()) return;
   throw Usage_error("kernel '" + name + "' is not supported by subdivide (its constructions are needed; supported: " +
                     comma_list(subdivision_kernel_names()) + ")");
+}
+
+unsigned subdivision_levels(int levels) {
+  if (levels < 0 || levels > 12) throw Usage_error("--levels must be in 0..12");
+  return static_cast<unsigned>(levels);
+}
+
+Loop_crease_rules parse_crease_rules(const std::string& name) {
+  if (name == "hoppe") return Loop_crease_rules::hoppe;
+  if (name == "blz") return Loop_crease_rules::biermann_levin_zorin;
+  throw Usage_error("--rules must be hoppe or blz");
 }
 
 std::vector<std::pair<double, double>> dyadic_samples(int n) {

@@ -17,6 +17,10 @@ namespace relgeo::tool {
 
 /// The kernels `subdivide` accepts (a subset of the tool's list).   [dispatch_float.cpp]
 const std::vector<std::string>& subdivision_kernel_names();
+/// The refinement levels `subdivide` accepts, 0..12. \throws Usage_error otherwise.  [dispatch_float.cpp]
+unsigned subdivision_levels(int levels);
+/// hoppe | blz. \throws Usage_error otherwise.                    [dispatch_float.cpp]
+Loop_crease_rules parse_crease_rules(const std::string& name);
 /// Throws Usage_error unless `name` is one of subdivision_kernel_names().
 void validate_subdivision_kernel(const std::string& name);
 

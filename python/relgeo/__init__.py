@@ -29,7 +29,7 @@ __all__ = [
     "kernels", "kernel", "kernel_names", "sweep",
     "orient2d", "orient3d", "orientation_grid", "kettner_triples",
     "convex_hull", "solve",
-    "read_mesh", "write_mesh", "validate_solid", "boolean", "check_extrusion",
+    "read_mesh", "write_mesh", "validate_solid", "boolean", "check_extrusion", "loop_subdivide", "limit_mesh",
     "Error", "InvalidInput", "NonFiniteInput", "UnreadableFile", "UnwritableFile", "InvalidMesh", "InvalidOperand",
     "PreconditionViolation", "SingularMatrix",
 ]
@@ -218,3 +218,23 @@ def check_extrusion(contour, algorithm="graham-fortune", kernel="failsafe", unce
                                        absolute_uncertainty, prune, max_listed)
     return _relgeo.check_extrusion(os.fspath(contour), None, algorithm, kernel, uncertainty, absolute_uncertainty,
                                    prune, max_listed)
+
+
+# ---- subdivision ----------------------------------------------------------------------
+
+def loop_subdivide(V, F, levels=1, kernel="double", rules="hoppe"):
+    """(V, F) refined ``levels`` times by Loop's scheme (``relgeo subdivide``):
+    levels 0..12, a kernel with constructions (float, double, long-double,
+    failsafe, interval, filtered, exact, mpfr-53, mpfr-113; the tool's
+    default "double"), crease rules
+    "hoppe" or "blz" (crease and corner tags are not taken yet).
+    Raises ``InvalidMesh`` / ``NonFiniteInput`` for bad meshes, ``ValueError``
+    for bad names or levels."""
+    return _relgeo.subdivide(V, F, levels, kernel, rules)["refined"]
+
+
+def limit_mesh(V, F, levels=1, kernel="double", rules="hoppe"):
+    """The limit mesh of (V, F) refined ``levels`` times: the refined mesh with
+    every vertex moved to its point on the limit surface (``relgeo subdivide
+    --limit``); arguments as ``loop_subdivide``."""
+    return _relgeo.subdivide(V, F, levels, kernel, rules)["limit"]

@@ -92,6 +92,13 @@ run_experiment() {
   local out=${RELGEO_RESULTS:-$root/results}
   "$build/tools/relgeo/relgeo" experiment --output "$out"
   log "results in $out"
+  # The Python package (when configured: python3-pybind11 and numpy found),
+  # on the tool's facade objects just built: only its bindings compile.
+  if [[ -f "$build/python/CMakeFiles/relgeo_python.dir/build.make" ]]; then
+    cmake --build "$build" --target relgeo_python -j "$jobs"
+    PYTHONPATH="$build/python" /usr/bin/python3 -c "import relgeo" && \
+      log "Python: PYTHONPATH=$build/python /usr/bin/python3 -c 'import relgeo' (doc/python.md)"
+  fi
 }
 
 # Runs "$1 ARG" for each further ARG, $jobs at a time (the machine's cores);

@@ -1,9 +1,9 @@
 # tools/relgeo/facade_sources.cmake — the tool's kernel-free facades: non-template
 # functions that take a kernel (or scalar) by name and run the algorithm under
 # it (the dispatch*.cpp files behind them), with the kernel registry, the
-# text helpers they use and the JSON records of their reports. The tool
-# compiles them into its executable; the Python module (python/) compiles the
-# same files position-independent.
+# text helpers they use and the JSON records of their reports: the library
+# relgeo_tool_facades (CMakeLists.txt here), linked by the tool and by the
+# Python module (python/).
 # Paths relative to tools/relgeo.
 set(relgeo_tool_facade_sources
   cli/text.cpp

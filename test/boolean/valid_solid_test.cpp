@@ -71,6 +71,52 @@ TEST(ValidSolid, AValidatedResultIsCertifiedAndNotCheckedAgain) {
   }
 }
 
+// The output's validation skips only the pairs of faces kept unchanged
+// from one certified operand, and concludes what the full validation
+// concludes.
+TEST(ValidSolid, TheValidationSkipsOnlyWhatTheCertificatesProve) {
+  const Boolean_chain c = make_chain(Chain_family::fused_spheres, 4);
+  Valid_solid current(c.start);
+  for (const auto& [op, operand] : c.steps) {
+    const auto r = boolean(current, Valid_solid(operand), op);
+    ASSERT_TRUE(r.ok()) << r.failure;
+    // Most faces of a union of spheres are kept whole, not all.
+    EXPECT_GT(r.counts.unchanged_certified_faces, r.mesh.faces.size() / 2);
+    EXPECT_LT(r.counts.unchanged_certified_faces, r.mesh.faces.size());
+    const Solid_report full = validate_solid(r.mesh, Boolean_options{}.validation);
+    EXPECT_EQ(r.validation.summary(), full.summary());
+    EXPECT_EQ(r.validation.volume.value, full.volume.value);
+    current = Valid_solid::of(r).value();
+  }
+}
+
+// Without a certificate nothing is skipped: an operand that crosses itself
+// (two overlapping cubes in one mesh), unchecked, keeps its crossing faces
+// in the output, and the validation finds them — also when the options
+// carry a certificate made for other meshes.
+TEST(ValidSolid, AnUncheckedOperandIsValidatedInFull) {
+  Mesh_double crossing = cube(0, 0, 0, 1);
+  const Mesh_double other = cube(0.5, 0.5, 0.5, 1);
+  const Index n = static_cast<Index>(crossing.vertices.size());
+  crossing.vertices.insert(crossing.vertices.end(), other.vertices.begin(), other.vertices.end());
+  for (Triangle t : other.faces) crossing.faces.push_back({t[0] + n, t[1] + n, t[2] + n});
+  const Mesh_double apart = cube(5, 0, 0, 1);
+  const Valid_solid x(cube(0, 0, 0, 1)), y(apart);
+  Boolean_options unchecked;
+  unchecked.check_operands = false;
+  for (const bool foreign_certificate : {false, true}) {
+    if (foreign_certificate) unchecked.certified_operands = Valid_solid::certificate(x, y);
+    const auto r = boolean(crossing, apart, Op::union_of, Filtered_exact_kernel{}, unchecked);
+    ASSERT_TRUE(r.ok()) << r.failure;
+    EXPECT_EQ(r.counts.unchanged_certified_faces, 0u);
+    EXPECT_EQ(r.validation.self_intersection_free.status, Check_status::fail) << r.validation.summary();
+  }
+  // The same certificate with its own meshes: certified, nothing to find.
+  const auto r = boolean(x, y, Op::union_of);
+  EXPECT_EQ(r.counts.unchanged_certified_faces, 24u);
+  EXPECT_TRUE(r.validation.is_valid_solid()) << r.validation.summary();
+}
+
 TEST(ValidSolid, NoCertificateWithoutAPassedValidation) {
   const Mesh_double a = torus(1, 0.3, 24, 12), b = rigidly_moved(icosphere(2), 0.3, 0.2, {0, 0, 0.05});
   // Nearest rounding of the insertion order's triangulation crosses itself.

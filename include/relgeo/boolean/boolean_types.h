@@ -41,6 +41,38 @@ constexpr std::string_view to_string(Boolean_operation op) {
 /// How a Boolean writes its new vertices in doubles (Boolean_options::rounding).
 enum class Output_rounding : std::uint8_t { nearest, repaired };
 
+class Valid_solid;
+namespace internal {
+template <IntersectionKernel_3 K>
+class Csg_evaluator;
+}
+
+/// That two meshes are valid solids certified by relgeo's exact checks
+/// (Valid_solids: checked once, or Boolean results whose validation
+/// passed), bound to those two mesh objects. A caller cannot make one for
+/// meshes relgeo did not certify (only Valid_solid::certificate and
+/// relgeo::csg make them), and the Boolean uses it only when its operands
+/// are those very objects: the output's validation skips what the
+/// certificates prove (Boolean_options::certified_operands), so a claim
+/// nobody checked would make it certify what it did not test.
+class Operand_certificate {
+ public:
+  Operand_certificate() = default;
+  /// The certificate holds for operands `a` and `b` (the same objects).
+  bool covers(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b) const {
+    return a_ == &a && b_ == &b;
+  }
+
+ private:
+  friend class Valid_solid;
+  template <IntersectionKernel_3 K>
+  friend class internal::Csg_evaluator;
+  Operand_certificate(const Triangle_mesh<Point_3<double>>* a, const Triangle_mesh<Point_3<double>>* b)
+      : a_(a), b_(b) {}
+  const Triangle_mesh<Point_3<double>>* a_ = nullptr;
+  const Triangle_mesh<Point_3<double>>* b_ = nullptr;
+};
+
 /// Options of relgeo::boolean.
 struct Boolean_options {
   /// Refuse operands that are not closed, oriented 2-manifolds with finite
@@ -83,6 +115,14 @@ struct Boolean_options {
   /// Options of that validation (the exact volume string is off by default:
   /// it can be long).
   Solid_validation_options validation{.exact_volume_string = false};
+  /// Set by the Boolean of two Valid_solids and by relgeo::csg
+  /// (Operand_certificate): both operands are certified valid solids, these
+  /// very objects. Then, as when this Boolean checks
+  /// its operands itself (check_operands and check_self_intersections), the
+  /// output's validation tests no pair of output faces that are, unchanged,
+  /// faces of one operand: that operand's exact self-intersection test
+  /// already decided them (Boolean_counts::unchanged_certified_faces).
+  Operand_certificate certified_operands{};
   /// Threads for the operand checks and the broad phase (1: serial; 0: every
   /// hardware thread; more than one only when the target links relgeo::tbb,
   /// see mesh/internal/parallel.h). The result does not depend on it.
@@ -142,6 +182,11 @@ struct Boolean_counts {
   std::size_t split_faces = 0;         ///< input faces retriangulated
   std::size_t patches = 0;             ///< pieces labelled by one decision each
   std::size_t checked_operands = 0;    ///< operands checked first (0: check_operands off, or Valid_solid operands)
+  /// Output faces that are, unchanged, faces of a certified operand (the
+  /// same three points and vertices); the validation tests no pair of two
+  /// of them from one operand (Boolean_options::certified_operands). 0 when
+  /// the operands are not certified.
+  std::size_t unchanged_certified_faces = 0;
 };
 
 /// The kernel-free part of a Boolean's result: the mesh in doubles and

@@ -170,7 +170,12 @@ class Csg_evaluator {
                                  : kind == Csg_node::Kind::intersection ? Boolean_operation::intersection
                                                                          : Boolean_operation::difference;
     internal::Stopwatch clock;
-    auto r = boolean(a, b, op, k_, inner_);
+    // The leaves checked in full (check) and every result validated (here):
+    // both operands are certified solids.
+    Boolean_options options = inner_;
+    if (options_.boolean.check_operands && options_.boolean.check_self_intersections && inner_.validate_output)
+      options.certified_operands = Operand_certificate(&a, &b);
+    auto r = boolean(a, b, op, k_, options);
     Csg_step s{path, kind, r.ok(), r.failure, r.mesh.faces.size(), r.validation.volume.value,
                r.validation.summary(), r.rounding, 0};
     if (s.ok && inner_.validate_output && !r.validation.is_valid_solid()) {

@@ -95,12 +95,13 @@ class Boolean_engine {
     // boxes, about as fast as building A's and searching both (face_boxes
     // throws Invalid_mesh for bad unchecked operands, as B's hierarchy does).
     if (!bvh_b_) bvh_b_.emplace(*mesh_[1], Face_bvh_options{.threads = options_.threads});
-    const std::vector<Face_pair> pairs =
-        bvh_b_->overlapping_pairs_with_boxes(face_boxes(*mesh_[0]), options_.threads);
+    std::vector<Face_pair> pairs = bvh_b_->overlapping_pairs_with_boxes(face_boxes(*mesh_[0]), options_.threads);
     bvh_b_.reset();  // each phase frees what no later one needs (peak memory)
     r.counts.candidate_pairs = pairs.size();
     r.time.broad_phase = clock.lap();
     if (!narrow_phase(pairs, r)) return finish_failed(r, clock, &Boolean_timing::narrow_phase);
+    // The validation tests again those of these pairs whose faces are kept whole.
+    if (options_.validate_output && operands_certified()) candidate_pairs_ = std::move(pairs);
     r.time.narrow_phase = clock.lap();
     if (!retriangulate(r)) return finish_failed(r, clock, &Boolean_timing::retriangulation);
     r.time.retriangulation = clock.lap();
@@ -111,14 +112,14 @@ class Boolean_engine {
     r.time.assembly = clock.lap();
     // The validation, when asked for, tells whether the rounding broke
     // anything (most outputs: no): only then does the repair look for it.
-    if (options_.validate_output) r.validation = validate_solid<Check_kernel>(r.mesh, options_.validation);
+    if (options_.validate_output) validate(r);
     r.time.validation = clock.lap();
     const bool repair = K::is_certified && options_.rounding == Output_rounding::repaired;
     if (repair && !(options_.validate_output && rounding_kept_validity(r.validation))) {
       repair_rounding_of(r);
       r.time.rounding = clock.lap();
       if (options_.validate_output && r.rounding.rounds > 0) {
-        r.validation = validate_solid<Check_kernel>(r.mesh, options_.validation);
+        validate(r);
         r.time.validation += clock.lap();
       }
       // A repair that did not converge fails the Boolean, unless the output
@@ -679,7 +680,84 @@ class Boolean_engine {
     r.mesh.tags.set_creases(std::move(creases));  // sorted, each once
   }
 
-  // ---- 7. rounding ---------------------------------------------------------------------
+  // ---- 7. validation -------------------------------------------------------------------
+
+  // The operands are certified valid solids: checked here (the exact
+  // self-intersection test included) or by relgeo before (Valid_solid, csg).
+  bool operands_certified() const {
+    return options_.certified_operands.covers(*mesh_[0], *mesh_[1]) ||
+           (options_.check_operands && options_.check_self_intersections);
+  }
+
+  // validate_solid on the output's doubles, under the exact predicates
+  // whatever K. With certified operands, no pair of faces kept unchanged
+  // from one operand is tested again: that operand's certificate decided it.
+  void validate(Result& r) const {
+    if (!operands_certified()) {
+      r.validation = validate_solid<Check_kernel>(r.mesh, options_.validation);
+      return;
+    }
+    const Certified_faces certified = unchanged_operand_faces(r);
+    r.counts.unchanged_certified_faces = static_cast<std::size_t>(
+        std::count_if(certified.group.begin(), certified.group.end(), [](std::uint8_t g) { return g != 0; }));
+    r.validation = internal::validate_solid(r.mesh, Check_kernel{}, options_.validation, &certified);
+  }
+
+  // Per output face: 1 + its operand when it is, unchanged, a face of that
+  // operand, else 0. Unchanged: its three points are the input face's (in
+  // either orientation), no other output face is that input face, and each
+  // of the input face's vertices is one output vertex (none split). Two
+  // such faces of one operand then meet in the output exactly as they meet
+  // in the operand: in their shared vertices and edge at most. The pairs of
+  // such faces across the operands whose boxes overlap are among the broad
+  // phase's pairs (the same boxes): the validation tests them, and every
+  // pair with a new or moved face.
+  Certified_faces unchanged_operand_faces(const Result& r) const {
+    const Mesh& out = r.mesh;
+    constexpr Index none = invalid_index, conflict = invalid_index - 1;
+    const auto claim = [](Index& slot, Index value) { slot = slot == none || slot == value ? value : conflict; };
+    std::array<std::vector<Index>, 2> face_of, vertex_of;  // input face -> output face, input vertex -> output vertex
+    for (int m = 0; m < 2; ++m) {
+      face_of[m].assign(mesh_[m]->faces.size(), none);
+      vertex_of[m].assign(mesh_[m]->vertices.size(), none);
+    }
+    std::vector<std::uint8_t> group(out.faces.size(), 0);
+    for (Index f = 0; f < out.faces.size(); ++f) {
+      const Face_origin o = r.provenance[f];
+      const Mesh& in = *mesh_[o.operand];
+      const Triangle& t = in.faces[o.face];
+      std::array<Index, 3> corner{};  // the input vertex at each output corner
+      bool same = true;
+      for (int i = 0; i < 3 && same; ++i) {
+        const Point_3<double>& p = out.vertices[out.faces[f][i]];
+        int j = 0;
+        while (j < 3 && !(in.vertices[t[j]] == p)) ++j;
+        same = j < 3;
+        if (same) corner[i] = t[j];
+      }
+      if (!same || corner[0] == corner[1] || corner[1] == corner[2] || corner[0] == corner[2]) continue;
+      group[f] = static_cast<std::uint8_t>(1 + o.operand);
+      claim(face_of[o.operand][o.face], f);
+      for (int i = 0; i < 3; ++i) claim(vertex_of[o.operand][corner[i]], out.faces[f][i]);
+    }
+    for (Index f = 0; f < out.faces.size(); ++f) {
+      if (!group[f]) continue;
+      const Face_origin o = r.provenance[f];
+      bool unique = face_of[o.operand][o.face] == f;
+      for (Index v : mesh_[o.operand]->faces[o.face]) unique = unique && vertex_of[o.operand][v] != conflict;
+      if (!unique) group[f] = 0;
+    }
+    Certified_faces certified;
+    for (const Face_pair& p : candidate_pairs_) {
+      const Index f = face_of[0][p.first], g = face_of[1][p.second];
+      if (f < conflict && g < conflict && group[f] && group[g])
+        certified.cross_pairs.push_back({std::min(f, g), std::max(f, g)});
+    }
+    certified.group = std::move(group);
+    return certified;
+  }
+
+  // ---- 8. rounding ---------------------------------------------------------------------
 
   static bool closed_manifold(const Solid_report& v) {
     return v.closed.passed() && v.edge_manifold.passed() && v.vertex_manifold.passed();
@@ -759,6 +837,9 @@ class Boolean_engine {
   // face hierarchy, built once (by the checks when they run).
   std::array<std::vector<Index>, 2> opposite_;
   std::optional<Face_bvh> bvh_b_;
+  // The broad phase's pairs (face of A, face of B), kept for the validation
+  // when the operands are certified.
+  std::vector<Face_pair> candidate_pairs_;
   Boolean_operation op_;
   const K& k_;
   Boolean_options options_;

@@ -56,6 +56,12 @@ class Valid_solid {
 
   const Mesh_double& mesh() const { return *mesh_; }
 
+  /// That the meshes of `a` and `b` are certified: what a Boolean of two
+  /// Valid_solids tells the engine (Boolean_options::certified_operands).
+  static Operand_certificate certificate(const Valid_solid& a, const Valid_solid& b) {
+    return Operand_certificate(a.mesh_.get(), b.mesh_.get());
+  }
+
  private:
   struct Certified {};
   Valid_solid(Mesh_double m, Certified) : mesh_(std::make_shared<const Mesh_double>(std::move(m))) {}
@@ -64,11 +70,14 @@ class Valid_solid {
 };
 
 /// relgeo::boolean of two certified solids: the same result as on their
-/// meshes, without the operand checks (options.check_operands is ignored).
+/// meshes, without the operand checks (options.check_operands is ignored),
+/// and a validation that does not test again what the certificates prove
+/// (Boolean_options::certified_operands).
 template <IntersectionKernel_3 K = Filtered_exact_kernel>
 Boolean_result<K> boolean(const Valid_solid& a, const Valid_solid& b, Boolean_operation op, const K& k = K{},
                           Boolean_options options = {}) {
   options.check_operands = false;
+  options.certified_operands = Valid_solid::certificate(a, b);
   return boolean(a.mesh(), b.mesh(), op, k, options);
 }
 

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -42,6 +43,7 @@
 #include "relgeo/mesh/internal/embedded_stars.h"
 #include "relgeo/mesh/internal/face_pair_predicates.h"
 #include "relgeo/mesh/internal/kernel_points.h"
+#include "relgeo/mesh/internal/parallel.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
@@ -79,6 +81,29 @@ struct Self_intersections {
 
 namespace internal {
 
+/// A pair of faces that meet (decided) or that the kernel could not decide.
+struct Self_intersection_hit {
+  Face_pair pair;
+  bool decided;  // false: undecided
+};
+
+/// The narrow phase on one candidate pair (f, g) of testable faces: a hit
+/// appended to `found` when they meet beyond what they share, or when K
+/// cannot decide.
+template <Kernel K, class Points>
+void test_face_pair(const K& k, const Points& point, const std::vector<Triangle>& faces, Index f, Index g,
+                    std::vector<Self_intersection_hit>& found) {
+  const Maybe meet = faces_meet_beyond_shared(k, point, faces[f], faces[g]);
+  if (!meet) found.push_back({{f, g}, false});
+  else if (*meet) found.push_back({{f, g}, true});
+}
+
+inline void sort_hits(const std::vector<Self_intersection_hit>& hits, Self_intersections& out) {
+  for (const Self_intersection_hit& h : hits) (h.decided ? out.pairs : out.undecided).push_back(h.pair);
+  std::sort(out.pairs.begin(), out.pairs.end());
+  std::sort(out.undecided.begin(), out.undecided.end());
+}
+
 /// The narrow phase on candidate pairs from `bvh`, for points already in K
 /// and faces flagged degenerate (1), undecided (2) or testable (0). Pairs
 /// sharing a vertex flagged in `embedded` (embedded_star_flags) are decided
@@ -87,22 +112,62 @@ template <Kernel K, class Points>
 void find_self_intersections(const K& k, const Points& point, const std::vector<Triangle>& faces,
                              const std::vector<unsigned char>& skip, const Face_bvh& bvh, int threads,
                              Self_intersections& out, const std::vector<unsigned char>* embedded = nullptr) {
-  struct Hit {
-    Face_pair pair;
-    bool decided;  // false: undecided
-  };
-  const std::vector<Hit> hits = bvh.collect_overlapping_pairs<Hit>(
-      [&](Index f, Index g, std::vector<Hit>& found) {
+  const std::vector<Self_intersection_hit> hits = bvh.collect_overlapping_pairs<Self_intersection_hit>(
+      [&](Index f, Index g, std::vector<Self_intersection_hit>& found) {
         if (skip[f] || skip[g]) return;
         if (embedded && share_embedded_star(faces[f], faces[g], *embedded)) return;
-        const Maybe meet = faces_meet_beyond_shared(k, point, faces[f], faces[g]);
-        if (!meet) found.push_back({{f, g}, false});
-        else if (*meet) found.push_back({{f, g}, true});
+        test_face_pair(k, point, faces, f, g, found);
       },
       threads, &out.candidate_pairs);
-  for (const Hit& h : hits) (h.decided ? out.pairs : out.undecided).push_back(h.pair);
-  std::sort(out.pairs.begin(), out.pairs.end());
-  std::sort(out.undecided.begin(), out.undecided.end());
+  sort_hits(hits, out);
+}
+
+/// What a caller knows of a mesh made of pieces of certified meshes (the
+/// Boolean's output, mesh_boolean.h): `group[f]` is 1 + m when face f is,
+/// unchanged, a face of mesh m whose exact self-intersection test passed
+/// (the same points, and two such faces of m share in this mesh what they
+/// share in m), 0 for any other face; `cross_pairs` (f < g) are all pairs
+/// of such faces of two different meshes whose boxes overlap (the caller's
+/// broad phase found them).
+struct Certified_faces {
+  std::vector<std::uint8_t> group;
+  std::vector<Face_pair> cross_pairs;
+};
+
+/// The narrow phase on what the certificates leave open: every pair with a
+/// face outside the groups (those faces' boxes searched in `bvh`), and the
+/// cross pairs. Two faces of one group meet only where they share a vertex
+/// or an edge, as in their certified mesh. `boxes`: the faces' boxes, in
+/// face order.
+template <Kernel K, class Points>
+void find_self_intersections(const K& k, const Points& point, const std::vector<Triangle>& faces,
+                             const std::vector<unsigned char>& skip, const Face_bvh& bvh,
+                             const std::vector<Box_3>& boxes, const Certified_faces& certified, int threads,
+                             Self_intersections& out) {
+  std::vector<Index> open;
+  std::vector<Box_3> open_boxes;
+  for (Index f = 0; f < faces.size(); ++f)
+    if (!certified.group[f] && !skip[f]) open.push_back(f), open_boxes.push_back(boxes[f]);
+  std::vector<Face_pair> pairs;
+  for (const auto [i, g] : bvh.overlapping_pairs_with_boxes(open_boxes, threads)) {
+    const Index f = open[i];
+    // A pair of two open faces is met twice: kept from its smaller face.
+    if (g == f || skip[g] || (!certified.group[g] && g < f)) continue;
+    pairs.push_back({std::min(f, g), std::max(f, g)});
+  }
+  for (const Face_pair& p : certified.cross_pairs)
+    if (!skip[p.first] && !skip[p.second]) pairs.push_back(p);
+  out.candidate_pairs = pairs.size();
+  // Fixed chunks: the same hits whatever the thread count.
+  constexpr std::size_t chunk = 1024;
+  std::vector<std::vector<Self_intersection_hit>> parts((pairs.size() + chunk - 1) / chunk);
+  parallel_for_each_index(parts.size(), threads, [&](std::size_t c) {
+    for (std::size_t i = c * chunk; i < std::min(pairs.size(), (c + 1) * chunk); ++i)
+      test_face_pair(k, point, faces, pairs[i].first, pairs[i].second, parts[c]);
+  });
+  std::vector<Self_intersection_hit> hits;
+  for (const auto& part : parts) hits.insert(hits.end(), part.begin(), part.end());
+  sort_hits(hits, out);
 }
 
 /// Flags degenerate faces (1: repeated vertex or collinear; 2: undecided)

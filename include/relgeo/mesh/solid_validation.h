@@ -26,6 +26,7 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -160,7 +161,8 @@ struct Solid_report {
   std::optional<long long> genus;  ///< sum over components, when defined
   Solid_volume volume;
   std::vector<Solid_component> component_list;  ///< the first max_listed components
-  /// Pairs of faces whose boxes overlap (the self-intersection test's work).
+  /// Pairs of faces whose boxes overlap (the self-intersection test's work;
+  /// when certificates decide some, those left to test).
   std::size_t candidate_pairs = 0;
   /// The kernel's points are the coordinates exactly (false: rounded to its
   /// number type first; the geometric checks are about the rounded mesh).
@@ -314,19 +316,14 @@ void report_orientation(const K& k, const Triangle_mesh<P>& m, const Points& poi
 
 }  // namespace internal
 
-/// \brief The validation report of `m` as the boundary of a solid, under
-/// kernel K (by default Certified_kernel_for_number of the coordinates: exact
-/// predicates — Filtered_exact_kernel on double coordinates, Exact_kernel on
-/// rationals; any relgeo or CGAL-adapter kernel works, a fail-safe or
-/// interval kernel reports `undecided` where it cannot decide, never a
-/// wrong pass or fail).
-///
-/// Never throws for bad input (every defect is reported); works on any
-/// triangle soup. Complexity O(n log n + k) for n faces and k pairs of
-/// overlapping face boxes, plus one segment query per component when there
-/// are several.
+namespace internal {
+
+/// validate_solid, except that the self-intersection test leaves to the
+/// caller's certificates what they decide (Certified_faces: pairs of faces
+/// kept unchanged from one certified mesh). nullptr: every pair is tested.
 template <Kernel K, class P>
-Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_validation_options& o = {}) {
+Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_validation_options& o,
+                            const Certified_faces* certified) {
   Solid_report r;
   r.kernel = K::name();
   r.vertices = m.vertices.size(), r.faces = m.faces.size();
@@ -374,9 +371,18 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
     internal::not_checked(r.outward_oriented, "needs the self-intersection test");
     return r;
   }
-  const Face_bvh bvh(m, {.threads = o.threads});
   Self_intersections si;
-  internal::find_self_intersections(k, point, m.faces, skip, bvh, o.threads, si);
+  const Face_bvh bvh = [&] {
+    if (!certified) {
+      Face_bvh all(m, {.threads = o.threads});
+      internal::find_self_intersections(k, point, m.faces, skip, all, o.threads, si);
+      return all;
+    }
+    const std::vector<Box_3> boxes = face_boxes(m);
+    Face_bvh all(boxes, {.threads = o.threads});
+    internal::find_self_intersections(k, point, m.faces, skip, all, boxes, *certified, o.threads, si);
+    return all;
+  }();
   r.candidate_pairs = si.candidate_pairs;
   for (const Face_pair& p : si.pairs)
     internal::record(r.self_intersection_free, {Mesh_defect::self_intersection, {p.first, p.second}}, o.max_listed);
@@ -385,6 +391,15 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
   internal::conclude(r.self_intersection_free, si.pairs.empty());
   const std::size_t untested = r.non_degenerate_faces.count;
   if (untested) r.self_intersection_free.note = std::to_string(untested) + " degenerate or undecided faces not tested";
+  if (certified) {
+    const auto kept = static_cast<std::size_t>(
+        std::count_if(certified->group.begin(), certified->group.end(), [](std::uint8_t g) { return g != 0; }));
+    if (kept) {
+      if (!r.self_intersection_free.note.empty()) r.self_intersection_free.note += "; ";
+      r.self_intersection_free.note += "pairs among the " + std::to_string(kept) +
+                                       " faces kept unchanged from one certified mesh decided by its certificate";
+    }
+  }
   if (undecided_face && r.self_intersection_free.passed()) r.self_intersection_free.status = Check_status::undecided;
 
   if (!o.check_orientation) {
@@ -410,6 +425,24 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
   return r;
 }
 
+}  // namespace internal
+
+/// \brief The validation report of `m` as the boundary of a solid, under
+/// kernel K (by default Certified_kernel_for_number of the coordinates: exact
+/// predicates — Filtered_exact_kernel on double coordinates, Exact_kernel on
+/// rationals; any relgeo or CGAL-adapter kernel works, a fail-safe or
+/// interval kernel reports `undecided` where it cannot decide, never a
+/// wrong pass or fail).
+///
+/// Never throws for bad input (every defect is reported); works on any
+/// triangle soup. Complexity O(n log n + k) for n faces and k pairs of
+/// overlapping face boxes, plus one segment query per component when there
+/// are several.
+template <Kernel K, class P>
+Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_validation_options& o = {}) {
+  return internal::validate_solid(m, k, o, nullptr);
+}
+
 /// validate_solid with K's default object (K: by default
 /// Certified_kernel_for_number of the coordinate type).
 template <KernelOrDefault K = void, class P>
@@ -432,9 +465,10 @@ void require_valid_solid(const Triangle_mesh<P>& m, const Solid_validation_optio
 }
 
 // The instances relgeo::compiled makes (src/compiled/mesh_checks.cpp).
-#define RELGEO_VALIDATE_SOLID_INSTANCE(PREFIX, K)                                              \
-  PREFIX Solid_report validate_solid<K, Point_3<double>>(const Triangle_mesh<Point_3<double>>&, const K&, \
-                                                         const Solid_validation_options&);
+#define RELGEO_VALIDATE_SOLID_INSTANCE(PREFIX, K)                                                                   \
+  PREFIX Solid_report internal::validate_solid<K, Point_3<double>>(const Triangle_mesh<Point_3<double>>&, const K&, \
+                                                                   const Solid_validation_options&,                 \
+                                                                   const internal::Certified_faces*);
 #if RELGEO_LINKS_COMPILED
 RELGEO_COMPILED_KERNELS(RELGEO_VALIDATE_SOLID_INSTANCE, extern template)
 #endif

@@ -66,7 +66,8 @@ io::Json boolean_report_json(const Boolean_report_input& in) {
                       {"coplanar_pairs", r.counts.coplanar_pairs},
                       {"new_vertices", r.counts.new_vertices},
                       {"split_faces", r.counts.split_faces},
-                      {"patches", r.counts.patches}}},
+                      {"patches", r.counts.patches},
+                      {"unchanged_certified_faces", r.counts.unchanged_certified_faces}}},
                     {"time_s", time_s}});
   if (in.oracle) {
     const Oracle_comparison& o = *in.oracle;
@@ -113,7 +114,8 @@ std::string boolean_report_text(const Boolean_report_input& in) {
   }
   s << "pairs            " << r.counts.candidate_pairs << " candidates, " << r.counts.intersecting_pairs << " intersecting ("
     << r.counts.coplanar_pairs << " coplanar); " << r.counts.new_vertices << " new vertices, " << r.counts.split_faces
-    << " faces split, " << r.counts.patches << " patches\n";
+    << " faces split, " << r.counts.patches << " patches; " << r.counts.unchanged_certified_faces
+    << " output faces kept whole from a certified operand\n";
   std::snprintf(buf, sizeof buf,
                 "%.4f s (check %.4f, broad %.4f, narrow %.4f, retriangulation %.4f, labelling %.4f, assembly %.4f, "
                 "rounding %.4f)",

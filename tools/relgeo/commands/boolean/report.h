@@ -33,7 +33,7 @@ struct Boolean_report_input {
 /// the output's validate_solid report; null when the Boolean failed),
 /// exact_self_intersecting_pairs (exact kernel; else null), rounding_error, counts
 /// {candidate_pairs, intersecting_pairs, coplanar_pairs, new_vertices,
-/// split_faces, patches}, time_s {check, broad_phase, narrow_phase,
+/// split_faces, patches, unchanged_certified_faces}, time_s {check, broad_phase, narrow_phase,
 /// retriangulation, labelling, assembly, total, validation}, [oracle {cgal_ok,
 /// cgal_volume, cgal_faces, volume_difference, symmetric_difference_volume,
 /// hausdorff}].

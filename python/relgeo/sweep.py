@@ -9,6 +9,7 @@ table: a list of dicts, one row a task, in the grid's order.
     rows = relgeo.sweep.orientation_sweep(["double", "failsafe", "interval", "filtered"], sizes=[10000])
     rows = relgeo.sweep.orientation_sweep(kernels, sizes, scheduler="tcp://host:8786")  # an existing cluster
     rows = relgeo.sweep.orientation_sweep(kernels, sizes, scheduler="serial")           # no Dask
+    rows = relgeo.sweep.boolean_sweep("meshes/", ["union", "difference"], ["filtered", "exact"])
 
 A task that raises, or whose worker dies, gives a row with ``error`` set
 (the exception's type and message) and no counts; the others still run.
@@ -19,6 +20,7 @@ module).
 """
 
 import contextlib
+import os
 import sys
 import time
 
@@ -128,15 +130,111 @@ def orientation_sweep(kernels, sizes, workloads=None, dimension=2, seed=1, shard
     return run_tasks(run_orientation_task, tasks, scheduler, n_workers, progress=progress)
 
 
+BOOLEAN_COUNTS = ("faces", "unchanged_faces", "moved_vertices", "repair_rounds")
+"""The integer columns of a Boolean sweep's rows (-1 when the task failed)."""
+
+MESH_SUFFIXES = (".off", ".obj", ".ply", ".stl")
+
+
+def _mesh_files(meshes):
+    """The mesh files of a folder (sorted by name), or the given paths."""
+    if isinstance(meshes, (str, os.PathLike)) and os.path.isdir(meshes):
+        return sorted(os.path.join(meshes, f) for f in os.listdir(meshes) if f.lower().endswith(MESH_SUFFIXES))
+    return [os.fspath(m) for m in ([meshes] if isinstance(meshes, (str, os.PathLike)) else meshes)]
+
+
+def _rigid_motion(rng):
+    """A rotation by 0.1-0.6 rad about a random axis and a shift of 5-15% of
+    the box diagonal along a random direction (the Boolean tests' and
+    benchmark's moved copies)."""
+    axis = rng.normal(size=3)
+    direction = rng.normal(size=3)
+    return {"axis": (axis / np.linalg.norm(axis)).tolist(), "angle": float(rng.uniform(0.1, 0.6)),
+            "direction": (direction / np.linalg.norm(direction)).tolist(), "shift": float(rng.uniform(0.05, 0.15))}
+
+
+def moved_copy(V, motion):
+    """V rotated about its box centre and shifted (motion: as in boolean_tasks).
+    Elementwise numpy operations, no BLAS: the same doubles on every machine."""
+    V = np.asarray(V, dtype=np.float64)
+    lo, hi = V.min(axis=0), V.max(axis=0)
+    centre, diagonal = 0.5 * (lo + hi), float(np.sqrt(((hi - lo) ** 2).sum()))
+    (x, y, z), a = motion["axis"], motion["angle"]
+    c, s, t = np.cos(a), np.sin(a), 1 - np.cos(a)
+    R = [[c + x * x * t, x * y * t - z * s, x * z * t + y * s],
+         [y * x * t + z * s, c + y * y * t, y * z * t - x * s],
+         [z * x * t - y * s, z * y * t + x * s, c + z * z * t]]
+    P = V - centre
+    out = np.empty_like(V)
+    for i in range(3):
+        out[:, i] = R[i][0] * P[:, 0] + R[i][1] * P[:, 1] + R[i][2] * P[:, 2] + centre[i] + \
+            motion["shift"] * diagonal * motion["direction"][i]
+    return out
+
+
+def boolean_tasks(meshes, operations=("union", "intersection", "difference"), kernels=("filtered",), seed=1):
+    """The grid of a Boolean sweep: one dict per (mesh, operation, kernel), in
+    that nesting order, each mesh against a rigidly moved copy of itself
+    (the motion drawn per mesh from ``seed``, stored in the task: every task
+    of a mesh uses the same copy, wherever it runs). ``meshes``: a folder
+    (its .off, .obj, .ply and .stl files, sorted by name) or a list of paths."""
+    rng = np.random.default_rng(seed)
+    tasks = []
+    for path in _mesh_files(meshes):
+        motion = _rigid_motion(rng)
+        for operation in operations:
+            for kernel in kernels:
+                tasks.append({"mesh": os.path.basename(path), "path": path, "operation": operation,
+                              "kernel": kernel, "motion": motion})
+    return tasks
+
+
+def run_boolean_task(task):
+    """One task: relgeo.boolean of the mesh and its moved copy under the
+    task's kernel. The row: status ("ok", "failed" or "error"), failure,
+    valid (the output's validation), volume, faces, unchanged_faces (kept
+    whole from a certified operand), moved_vertices and repair_rounds (the
+    rounding repair), rounding_error, and time_s (the Boolean, without its
+    validation). Never raises: a refused operand (InvalidOperand: an open or
+    self-intersecting mesh of a collection is real input) or any other
+    exception is the row's ``error``."""
+    from . import boolean, read_mesh  # the package's functions (it imports this module first)
+
+    row = dict(task, error=None)
+    del row["path"]
+    try:
+        V, F = read_mesh(task["path"], triangulate=True)
+        r = boolean((V, F), (moved_copy(V, task["motion"]), F), task["operation"], task["kernel"])
+        row.update(status=r["status"], failure=r["failure"], valid=bool(r["validation"].get("valid_solid", False)),
+                   volume=r["validation"].get("volume", {}).get("value"), faces=int(r["output"]["faces"]),
+                   unchanged_faces=int(r["counts"].get("unchanged_certified_faces", 0)),
+                   moved_vertices=int(r["rounding"]["moved_vertices"]), repair_rounds=int(r["rounding"]["rounds"]),
+                   rounding_error=r["rounding_error"],
+                   time_s=sum(t for phase, t in r["time_s"].items() if phase != "validation"))
+    except Exception as e:  # reported in the table, not fatal to the sweep
+        row.update(status="error", error=f"{type(e).__name__}: {e}")
+    return row
+
+
+def boolean_sweep(meshes, operations=("union", "intersection", "difference"), kernels=("filtered",), seed=1,
+                  scheduler=None, n_workers=2, progress=True):
+    """A kernel comparison of the mesh Boolean over a collection of meshes
+    (CGAL's data set, say): every mesh against a moved copy of itself, for
+    each operation and kernel (boolean_tasks, run_boolean_task), on Dask as
+    orientation_sweep. One row per task, in the grid's order."""
+    return run_tasks(run_boolean_task, boolean_tasks(meshes, operations, kernels, seed), scheduler, n_workers,
+                     progress=progress)
+
+
 def as_records(rows):
     """The table as a numpy record array (columns of the first error-free row;
     missing counts of failed rows are -1, their time NaN)."""
     columns = next((list(r) for r in rows if r.get("error") is None), list(rows[0]) if rows else [])
     def column(name):
         values = [r.get(name) for r in rows]
-        if name in ORIENTATION_COUNTS:
+        if name in ORIENTATION_COUNTS or name in BOOLEAN_COUNTS:
             return np.array([-1 if v is None else v for v in values], dtype=np.int64)
-        if name in TIMING_COLUMNS:
+        if name in TIMING_COLUMNS or name in ("volume", "rounding_error"):
             return np.array([np.nan if v is None else v for v in values], dtype=np.float64)
         return np.array(["" if v is None else v for v in values]) if name == "error" else np.array(values)
     return np.rec.fromarrays([column(c) for c in columns], names=columns)

@@ -117,3 +117,64 @@ def test_records(serial_rows):
     assert len(table) == len(serial_rows)
     assert table.wrong.dtype == np.int64 and table.ns_per_call.dtype == np.float64
     assert list(table.kernel[:4]) == KERNELS
+
+
+# ---- Booleans over a folder of meshes ---------------------------------------------------
+
+from conftest import TESTDATA  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def mesh_folder(tmp_path_factory):
+    """Two solids, an open mesh (refused: a row with InvalidOperand) and a
+    file that is not a mesh (a row with UnreadableFile)."""
+    folder = tmp_path_factory.mktemp("meshes")
+    for name in ("icosahedron.off", "cube_open.off"):
+        (folder / name).write_bytes((TESTDATA / name).read_bytes())
+    (folder / "sphere.off").write_bytes((TESTDATA / "csg" / "fused_spheres_01.off").read_bytes())
+    (folder / "zz_garbage.off").write_text("OFF\n3 1 0\n0 0\n")
+    (folder / "notes.txt").write_text("not a mesh: not in the sweep")
+    return folder
+
+
+BOOLEAN_KERNELS = ["filtered", "exact", "double"]
+
+
+@pytest.fixture(scope="module")
+def boolean_rows(mesh_folder):
+    return sweep.boolean_sweep(mesh_folder, ["union", "difference"], BOOLEAN_KERNELS, scheduler="serial")
+
+
+def test_boolean_sweep_covers_the_folder_and_reports_bad_meshes(mesh_folder, boolean_rows):
+    assert len(boolean_rows) == 4 * 2 * len(BOOLEAN_KERNELS)
+    assert [r["mesh"] for r in boolean_rows[::6]] == ["cube_open.off", "icosahedron.off", "sphere.off",
+                                                      "zz_garbage.off"]
+    by_mesh = {}
+    for r in boolean_rows:
+        by_mesh.setdefault(r["mesh"], []).append(r)
+    assert all(r["error"].startswith("InvalidOperand") for r in by_mesh["cube_open.off"])
+    assert all(r["error"].startswith("UnreadableFile") for r in by_mesh["zz_garbage.off"])
+    for mesh in ("icosahedron.off", "sphere.off"):
+        for r in by_mesh[mesh]:
+            assert r["error"] is None, r
+            if r["kernel"] != "double":  # the naive kernel may fail a Boolean, and says so
+                assert r["status"] == "ok" and r["valid"], r
+        # the certified kernels agree on every doubles of the output
+        filtered, exact = ({r["operation"]: r for r in by_mesh[mesh] if r["kernel"] == k} for k in ("filtered", "exact"))
+        for op in ("union", "difference"):
+            assert filtered[op]["volume"] == exact[op]["volume"] and filtered[op]["faces"] == exact[op]["faces"]
+    # a row is what relgeo.boolean gives on the same operands
+    task = next(t for t in sweep.boolean_tasks(mesh_folder, ["union"], ["filtered"]) if t["mesh"] == "sphere.off")
+    V, F = relgeo.read_mesh(task["path"])
+    r = relgeo.boolean((V, F), (sweep.moved_copy(V, task["motion"]), F), "union", "filtered")
+    row = next(r for r in boolean_rows if r["mesh"] == "sphere.off" and r["operation"] == "union"
+               and r["kernel"] == "filtered")
+    assert row["volume"] == r["validation"]["volume"]["value"] and row["faces"] == len(r["F"])
+    assert 0 < row["unchanged_faces"] < row["faces"]  # the sphere's copy cuts it: some faces kept whole, not all
+
+
+def test_boolean_sweep_on_a_local_cluster_equals_the_serial_one(mesh_folder, boolean_rows):
+    rows = sweep.boolean_sweep(mesh_folder, ["union", "difference"], BOOLEAN_KERNELS, n_workers=2, progress=False)
+    assert deterministic(rows) == deterministic(boolean_rows)
+    table = sweep.as_records(rows)
+    assert table.faces.dtype == np.int64 and list(table.faces[:6]) == [-1] * 6  # the open mesh's rows

@@ -37,11 +37,21 @@ def test_read_mesh_matches_the_file():
 @pytest.mark.parametrize("a,b", [("cube.off", "cube_offset.off"), ("icosahedron.off", "icosahedron_moved.off")])
 def test_validate_solid_matches_the_tools_validation(tool, tmp_path, a, b, op):
     """The tool validates a Boolean's output with validate_solid under the
-    filtered kernel; the output file read back gives the same report."""
+    filtered kernel; the output file read back gives the same report, but
+    that the Boolean leaves the pairs of faces kept whole from one checked
+    operand to that operand's certificate (fewer candidate pairs, a note)."""
     out = tmp_path / "result.off"
     expected = tool.json("boolean", TESTDATA / a, TESTDATA / b, "--op", op, "--output", out)
     report = relgeo.validate_solid(*relgeo.read_mesh(out))
+
+    def certificate_fields(r):
+        return r.pop("candidate_pairs"), r["checks"]["self_intersection_free"].pop("note", "")
+
+    (pairs, note), (boolean_pairs, boolean_note) = certificate_fields(report), certificate_fields(expected["validation"])
     assert report == expected["validation"]
+    assert boolean_pairs <= pairs and note == ""
+    if expected["counts"]["unchanged_certified_faces"]:
+        assert "kept unchanged from one certified mesh" in boolean_note
 
 
 def test_validate_solid_known_answers():

@@ -20,4 +20,7 @@ set(relgeo_tool_facade_sources
   commands/subdivide/dispatch_exact.cpp
   commands/boolean/names.cpp
   commands/boolean/dispatch.cpp
-  commands/boolean/report.cpp)
+  commands/boolean/report.cpp
+  commands/csg/dispatch.cpp
+  commands/csg/tree.cpp
+  commands/csg/report.cpp)

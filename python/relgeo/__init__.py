@@ -15,8 +15,8 @@ import os
 import numpy as np
 
 from . import _relgeo, sweep
-from .errors import (Error, InvalidInput, InvalidMesh, InvalidOperand, NonFiniteInput, PreconditionViolation,
-                     SingularMatrix, UnreadableFile, UnwritableFile)
+from .errors import (Error, InvalidCsgNode, InvalidInput, InvalidMesh, InvalidOperand, NonFiniteInput,
+                     PreconditionViolation, SingularMatrix, UnreadableFile, UnwritableFile)
 
 NEGATIVE, ZERO, POSITIVE, UNCERTAIN = -1, 0, 1, 2
 """The int8 values of relgeo::Certified_sign."""
@@ -29,9 +29,9 @@ __all__ = [
     "kernels", "kernel", "kernel_names", "sweep",
     "orient2d", "orient3d", "orientation_grid", "kettner_triples",
     "convex_hull", "solve",
-    "read_mesh", "write_mesh", "validate_solid", "boolean", "check_extrusion", "loop_subdivide", "limit_mesh",
+    "read_mesh", "write_mesh", "validate_solid", "boolean", "csg", "check_extrusion", "loop_subdivide", "limit_mesh",
     "Error", "InvalidInput", "NonFiniteInput", "UnreadableFile", "UnwritableFile", "InvalidMesh", "InvalidOperand",
-    "PreconditionViolation", "SingularMatrix",
+    "InvalidCsgNode", "PreconditionViolation", "SingularMatrix",
 ]
 
 # ---- kernels ----------------------------------------------------------------------
@@ -198,6 +198,60 @@ def boolean(A, B, op="union", kernel=DEFAULT_KERNEL, rounding="repaired", retria
     return _relgeo.boolean(VA, FA, VB, FB, op, kernel, rounding, retriangulation, check_self_intersections)
 
 
+def _csg_document(node, arrays):
+    """The tree as JSON data: every (V, F) leaf (a pair of arrays, or a dict
+    with "vertices" and "faces") becomes {"mesh": {"arrays": k}} with its
+    arrays appended to ``arrays``; file names become strings. Anything else is
+    left for the tool's parser to accept or refuse, naming the node."""
+    if (isinstance(node, tuple) and len(node) == 2) or (isinstance(node, list) and len(node) == 2 and
+                                                        isinstance(node[0], np.ndarray)):
+        arrays.append((np.asarray(node[0], dtype=np.float64), np.asarray(node[1], dtype=np.int64)))
+        return {"mesh": {"arrays": len(arrays) - 1}}
+    if isinstance(node, dict):
+        if "vertices" in node and "faces" in node and "mesh" not in node and "op" not in node:
+            return _csg_document((node["vertices"], node["faces"]), arrays)
+        node = dict(node)
+        if isinstance(node.get("mesh"), (str, os.PathLike)):
+            node["mesh"] = os.fspath(node["mesh"])
+        if isinstance(node.get("args"), (list, tuple)):
+            node["args"] = [_csg_document(arg, arrays) for arg in node["args"]]
+    return node
+
+
+def csg(tree, kernel=DEFAULT_KERNEL, rounding="repaired", retriangulation="delaunay", check_self_intersections=True,
+        base=None):
+    """Evaluates a CSG tree of closed triangle meshes (``relgeo csg``).
+
+    tree: the path of a TREE.json file (its mesh files relative to its
+    folder, as the tool reads it), or the same document as a dict: a node is
+    ``{"op": "union" | "intersection" | "difference", "args": [node, ...]}``
+    (a difference is its first argument minus all the others) or a leaf:
+    ``{"mesh": "file.off"}`` (relative to ``base``, default the current
+    folder), a pair ``(V, F)`` of arrays, or ``{"vertices": V, "faces": F}``.
+    Kernels: "filtered" (default), "exact", "double".
+
+    Returns a dict: the root's solid ``V``, ``F`` (the last valid result when
+    a step failed) and the fields of ``relgeo csg --format json``: tree (the
+    file; absent for a dict), kernel, status ("ok" or "failed"), failure,
+    steps [{node, operation, ok, failure, faces, volume, validation,
+    rounding, seconds}], output {vertices, faces, volume}, seconds,
+    total_seconds. Raises ``InvalidCsgNode`` (an ``InvalidInput``, a
+    ``ValueError``) naming the node (``e.node``: "root.1") for an unknown
+    op, fewer than two arguments, a leaf that cannot be read or is not a
+    valid solid; ``UnreadableFile`` for a tree file that cannot be read or
+    is not JSON; ``ValueError`` for a bad kernel or option name. The GIL is
+    released while the tree is read and evaluated.
+    """
+    options = (kernel, rounding, retriangulation, check_self_intersections)
+    if isinstance(tree, (str, os.PathLike)):
+        return _relgeo.csg(os.fspath(tree), None, [], "", *options)
+    arrays = []
+    # What JSON cannot hold (an array outside a leaf) becomes a string, which
+    # the parser refuses naming the node.
+    text = json.dumps(_csg_document(tree, arrays), default=lambda o: f"<{type(o).__name__}>")
+    return _relgeo.csg(None, text, arrays, os.fspath(base) if base is not None else "", *options)
+
+
 # ---- extrusion ------------------------------------------------------------------------
 
 def check_extrusion(contour, algorithm="graham-fortune", kernel="failsafe", uncertainty=None,
@@ -238,3 +292,4 @@ def limit_mesh(V, F, levels=1, kernel="double", rules="hoppe"):
     every vertex moved to its point on the limit surface (``relgeo subdivide
     --limit``); arguments as ``loop_subdivide``."""
     return _relgeo.subdivide(V, F, levels, kernel, rules)["limit"]
+

@@ -15,6 +15,7 @@ void bind_hull(py::module_& m);         // hull.cpp: convex_hull
 void bind_linear(py::module_& m);       // linear.cpp: solve
 void bind_mesh(py::module_& m);         // mesh.cpp: read_mesh, write_mesh, validate_solid
 void bind_boolean(py::module_& m);      // boolean.cpp: boolean
+void bind_csg(py::module_& m);          // csg.cpp: csg
 void bind_extrusion(py::module_& m);    // extrusion.cpp: check_extrusion
 void bind_subdivision(py::module_& m);  // subdivision.cpp: subdivide
 

@@ -30,6 +30,7 @@ __all__ = [
     "orient2d", "orient3d", "orientation_grid", "kettner_triples",
     "convex_hull", "solve",
     "read_mesh", "write_mesh", "validate_solid", "boolean", "csg", "check_extrusion", "loop_subdivide", "limit_mesh",
+    "limit_evaluate",
     "Error", "InvalidInput", "NonFiniteInput", "UnreadableFile", "UnwritableFile", "InvalidMesh", "InvalidOperand",
     "InvalidCsgNode", "PreconditionViolation", "SingularMatrix",
 ]
@@ -292,4 +293,28 @@ def limit_mesh(V, F, levels=1, kernel="double", rules="hoppe"):
     every vertex moved to its point on the limit surface (``relgeo subdivide
     --limit``); arguments as ``loop_subdivide``."""
     return _relgeo.subdivide(V, F, levels, kernel, rules)["limit"]
+
+
+def limit_evaluate(V, F, face, u, v, kernel="double", rules="hoppe"):
+    """The point of the Loop limit surface of the control mesh (V, F) at the
+    parameter (u, v) of face ``face`` (relgeo::Loop_limit_surface: box
+    splines on regular patches, exact local subdivision elsewhere; the
+    point w a + u b + v c of face (a, b, c) when the surface is the face),
+    computed under ``kernel`` (those of ``loop_subdivide``; exact under
+    "exact", enclosed under "interval") and rounded to double.
+
+    face, u, v: scalars or arrays, broadcast against each other. Returns a
+    (3,) array for scalars, else an (n, 3) array. Raises ``InvalidInput``
+    for a face out of range or (u, v) outside the triangle u, v >= 0,
+    u + v <= 1, ``NonFiniteInput`` for NaN parameters, ``InvalidMesh`` for
+    a mesh Loop's scheme refuses, ``ValueError`` for bad names.
+    """
+    single = all(np.ndim(a) == 0 for a in (face, u, v))
+    face, u, v = (np.atleast_1d(a) for a in np.broadcast_arrays(np.asarray(face, dtype=np.int64),
+                                                                 np.asarray(u, dtype=np.float64),
+                                                                 np.asarray(v, dtype=np.float64)))
+    if face.ndim != 1:
+        raise ValueError(f"limit_evaluate: face, u and v must be scalars or 1-d arrays, not of shape {face.shape}")
+    points = _relgeo.limit_evaluate(V, F, face, u, v, kernel, rules)
+    return points[0] if single else points
 

@@ -17,6 +17,6 @@ void bind_mesh(py::module_& m);         // mesh.cpp: read_mesh, write_mesh, vali
 void bind_boolean(py::module_& m);      // boolean.cpp: boolean
 void bind_csg(py::module_& m);          // csg.cpp: csg
 void bind_extrusion(py::module_& m);    // extrusion.cpp: check_extrusion
-void bind_subdivision(py::module_& m);  // subdivision.cpp: subdivide
+void bind_subdivision(py::module_& m);  // subdivision.cpp: subdivide, limit_evaluate
 
 }  // namespace relgeo::python

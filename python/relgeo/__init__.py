@@ -179,7 +179,7 @@ def validate_solid(V, F):
 # ---- Booleans -------------------------------------------------------------------------
 
 def boolean(A, B, op="union", kernel=DEFAULT_KERNEL, rounding="repaired", retriangulation="delaunay",
-            check_self_intersections=True):
+            check_self_intersections=True, levels=0, fit=False):
     """The regularised Boolean of two closed triangle meshes A = (V, F) and
     B = (V, F) (``relgeo boolean``): op "union" (default), "intersection",
     "difference" (A - B) or "xor"; exact under the filtered and exact kernels.
@@ -194,8 +194,28 @@ def boolean(A, B, op="union", kernel=DEFAULT_KERNEL, rounding="repaired", retria
     non-manifold, misoriented, degenerate or self-intersecting, ``ValueError``
     for a kernel without implicit points (the list is in the message).
     The GIL is released during the computation.
+
+    levels=K (K >= 1): the Boolean of the two Loop subdivision solids whose
+    control meshes are A and B (``relgeo boolean --levels K``; their limit
+    meshes at level K meet in the polyhedral Boolean, whose intersection
+    curves become creases of the result's level-K control mesh). Ops union,
+    intersection, difference; ``fit=True`` moves the control points near the
+    curves (``--fit``); rounding and retriangulation are not options there.
+    Returns the result's control mesh ``V``, ``F``, its crease edges
+    ``creases`` ((k, 2) int64) and ``corners`` ((k,) int64), and the fields of
+    the tool's JSON record (status, failure, level, fitted, operands, output,
+    counts, distance, validation: the certified validation of the
+    subdivision solid, polyhedral: the polyhedral Boolean's record with its
+    ``V``, ``F``, time_s). Crease tags of the operands are not taken yet.
     """
     (VA, FA), (VB, FB) = A, B
+    if levels:
+        if (rounding, retriangulation) != ("repaired", "delaunay"):
+            raise ValueError("boolean: rounding and retriangulation are not options of the subdivision Boolean "
+                             "(levels >= 1)")
+        return _relgeo.subdivision_boolean(VA, FA, VB, FB, op, levels, kernel, fit, check_self_intersections)
+    if fit:
+        raise ValueError("boolean: fit needs levels >= 1 (the tool's --fit needs --levels K)")
     return _relgeo.boolean(VA, FA, VB, FB, op, kernel, rounding, retriangulation, check_self_intersections)
 
 

@@ -21,6 +21,8 @@ set(relgeo_tool_facade_sources
   commands/boolean/names.cpp
   commands/boolean/dispatch.cpp
   commands/boolean/report.cpp
+  commands/boolean/dispatch_subdivision.cpp
+  commands/boolean/subdivision_report.cpp
   commands/csg/dispatch.cpp
   commands/csg/tree.cpp
   commands/csg/report.cpp)

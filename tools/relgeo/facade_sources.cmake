@@ -25,4 +25,6 @@ set(relgeo_tool_facade_sources
   commands/boolean/subdivision_report.cpp
   commands/csg/dispatch.cpp
   commands/csg/tree.cpp
-  commands/csg/report.cpp)
+  commands/csg/report.cpp
+  commands/join/dispatch.cpp
+  commands/join/facade.cpp)

@@ -30,7 +30,7 @@ __all__ = [
     "orient2d", "orient3d", "orientation_grid", "kettner_triples",
     "convex_hull", "solve",
     "read_mesh", "write_mesh", "validate_solid", "boolean", "csg", "check_extrusion", "loop_subdivide", "limit_mesh",
-    "limit_evaluate",
+    "limit_evaluate", "join",
     "Error", "InvalidInput", "NonFiniteInput", "UnreadableFile", "UnwritableFile", "InvalidMesh", "InvalidOperand",
     "InvalidCsgNode", "PreconditionViolation", "SingularMatrix",
 ]
@@ -338,3 +338,44 @@ def limit_evaluate(V, F, face, u, v, kernel="double", rules="hoppe"):
     points = _relgeo.limit_evaluate(V, F, face, u, v, kernel, rules)
     return points[0] if single else points
 
+
+# ---- joining --------------------------------------------------------------------------
+
+def join(surface, meshes, method="whitney", kernel=DEFAULT_KERNEL, curves=(), output=None,
+         max_absolute_error=float("inf"), max_normal_error=float("inf"), edge_curves=True, layers=1, min_angle=0.0,
+         slope_margin=2.0**-30, extrapolation=0.05):
+    """Joins mesh patches to the trimmed faces of a surface model (thesis Ch.
+    4, ``relgeo join``).
+
+    surface: the model's file (a JSON relgeo-surface-model, doc/joining.md;
+    STEP/IGES when relgeo has OpenCASCADE). meshes: one patch per face, in
+    face order, each a mesh file or a pair (V, F) of arrays. method
+    "whitney" (default), "naive" or "occt"; kernel of the certified checks:
+    "failsafe", "interval", "filtered" (default), "exact". curves: edge-curve
+    JSON files; output: also write the joined mesh there. The criteria and
+    joiner parameters are the tool's options (``max_absolute_error``,
+    ``max_normal_error``, ``edge_curves=False`` for ``--no-edge-curves``,
+    ``layers``, ``min_angle`` (0: 20.7 degrees), ``slope_margin``,
+    ``extrapolation``).
+
+    Returns a dict: the joined mesh ``V``, ``F``, ``face_of_triangle`` (the
+    model face of each triangle, int64) and the fields of ``relgeo join
+    --format json`` (status "ok" or "failed" and failure, faces with the
+    errors before and after and the certified flip counts, summary,
+    criteria, ...; ``meshes`` names array patches "<arrays i>", ``output``
+    is "" when not written). Raises ``UnreadableFile`` for a missing or
+    malformed file, ``InvalidInput`` for meshes that do not project onto
+    their faces or do not fit the model, ``ValueError`` for bad options.
+    """
+    names, arrays = [], []
+    for i, mesh in enumerate(meshes):
+        if isinstance(mesh, (str, os.PathLike)):
+            names.append(os.fspath(mesh))
+            arrays.append(None)
+        else:
+            V, F = mesh
+            names.append(f"<arrays {i}>")
+            arrays.append((np.asarray(V, dtype=np.float64), np.asarray(F, dtype=np.int64)))
+    return _relgeo.join(os.fspath(surface), names, arrays, [os.fspath(c) for c in curves],
+                        os.fspath(output) if output is not None else "", method, kernel, max_absolute_error,
+                        max_normal_error, edge_curves, layers, min_angle, slope_margin, extrapolation)

@@ -18,5 +18,6 @@ void bind_boolean(py::module_& m);      // boolean.cpp: boolean, subdivision_boo
 void bind_csg(py::module_& m);          // csg.cpp: csg
 void bind_extrusion(py::module_& m);    // extrusion.cpp: check_extrusion
 void bind_subdivision(py::module_& m);  // subdivision.cpp: subdivide, limit_evaluate
+void bind_join(py::module_& m);         // join.cpp: join
 
 }  // namespace relgeo::python

@@ -15,4 +15,5 @@ PYBIND11_MODULE(_relgeo, m) {
   relgeo::python::bind_csg(m);
   relgeo::python::bind_extrusion(m);
   relgeo::python::bind_subdivision(m);
+  relgeo::python::bind_join(m);
 }

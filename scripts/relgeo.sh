@@ -31,6 +31,7 @@ packages=(
   python3             # scripts/api_rules.py (two tests of `test`)
   python3-dev python3-pybind11 python3-numpy python3-pytest   # the Python package relgeo (python/) and its tests
   python3-distributed   # relgeo.sweep on Dask (python/relgeo/sweep.py)
+  python3-matplotlib    # examples/python/kernel_comparison.py's plot (and its test)
   libgmp-dev libmpfr-dev
   libcgal-dev libboost-dev libeigen3-dev libtbb-dev
   libgtest-dev libbenchmark-dev

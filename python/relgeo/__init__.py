@@ -15,8 +15,8 @@ import os
 import numpy as np
 
 from . import _relgeo, sweep
-from .errors import (Error, InvalidInput, InvalidMesh, InvalidOperand, NonFiniteInput, PreconditionViolation,
-                     SingularMatrix, UnreadableFile, UnwritableFile)
+from .errors import (Error, InvalidCsgNode, InvalidInput, InvalidMesh, InvalidOperand, NonFiniteInput,
+                     PreconditionViolation, SingularMatrix, UnreadableFile, UnwritableFile)
 
 NEGATIVE, ZERO, POSITIVE, UNCERTAIN = -1, 0, 1, 2
 """The int8 values of relgeo::Certified_sign."""
@@ -29,9 +29,10 @@ __all__ = [
     "kernels", "kernel", "kernel_names", "sweep",
     "orient2d", "orient3d", "orientation_grid", "kettner_triples",
     "convex_hull", "solve",
-    "read_mesh", "write_mesh", "validate_solid", "boolean", "check_extrusion", "loop_subdivide", "limit_mesh",
+    "read_mesh", "write_mesh", "validate_solid", "boolean", "csg", "check_extrusion", "loop_subdivide", "limit_mesh",
+    "limit_evaluate", "join",
     "Error", "InvalidInput", "NonFiniteInput", "UnreadableFile", "UnwritableFile", "InvalidMesh", "InvalidOperand",
-    "PreconditionViolation", "SingularMatrix",
+    "InvalidCsgNode", "PreconditionViolation", "SingularMatrix",
 ]
 
 # ---- kernels ----------------------------------------------------------------------
@@ -178,7 +179,7 @@ def validate_solid(V, F):
 # ---- Booleans -------------------------------------------------------------------------
 
 def boolean(A, B, op="union", kernel=DEFAULT_KERNEL, rounding="repaired", retriangulation="delaunay",
-            check_self_intersections=True):
+            check_self_intersections=True, levels=0, fit=False):
     """The regularised Boolean of two closed triangle meshes A = (V, F) and
     B = (V, F) (``relgeo boolean``): op "union" (default), "intersection",
     "difference" (A - B) or "xor"; exact under the filtered and exact kernels.
@@ -193,9 +194,83 @@ def boolean(A, B, op="union", kernel=DEFAULT_KERNEL, rounding="repaired", retria
     non-manifold, misoriented, degenerate or self-intersecting, ``ValueError``
     for a kernel without implicit points (the list is in the message).
     The GIL is released during the computation.
+
+    levels=K (K >= 1): the Boolean of the two Loop subdivision solids whose
+    control meshes are A and B (``relgeo boolean --levels K``; their limit
+    meshes at level K meet in the polyhedral Boolean, whose intersection
+    curves become creases of the result's level-K control mesh). Ops union,
+    intersection, difference; ``fit=True`` moves the control points near the
+    curves (``--fit``); rounding and retriangulation are not options there.
+    Returns the result's control mesh ``V``, ``F``, its crease edges
+    ``creases`` ((k, 2) int64) and ``corners`` ((k,) int64), and the fields of
+    the tool's JSON record (status, failure, level, fitted, operands, output,
+    counts, distance, validation: the certified validation of the
+    subdivision solid, polyhedral: the polyhedral Boolean's record with its
+    ``V``, ``F``, time_s). Crease tags of the operands are not taken yet.
     """
     (VA, FA), (VB, FB) = A, B
+    if levels:
+        if (rounding, retriangulation) != ("repaired", "delaunay"):
+            raise ValueError("boolean: rounding and retriangulation are not options of the subdivision Boolean "
+                             "(levels >= 1)")
+        return _relgeo.subdivision_boolean(VA, FA, VB, FB, op, levels, kernel, fit, check_self_intersections)
+    if fit:
+        raise ValueError("boolean: fit needs levels >= 1 (the tool's --fit needs --levels K)")
     return _relgeo.boolean(VA, FA, VB, FB, op, kernel, rounding, retriangulation, check_self_intersections)
+
+
+def _csg_document(node, arrays):
+    """The tree as JSON data: every (V, F) leaf (a pair of arrays, or a dict
+    with "vertices" and "faces") becomes {"mesh": {"arrays": k}} with its
+    arrays appended to ``arrays``; file names become strings. Anything else is
+    left for the tool's parser to accept or refuse, naming the node."""
+    if (isinstance(node, tuple) and len(node) == 2) or (isinstance(node, list) and len(node) == 2 and
+                                                        isinstance(node[0], np.ndarray)):
+        arrays.append((np.asarray(node[0], dtype=np.float64), np.asarray(node[1], dtype=np.int64)))
+        return {"mesh": {"arrays": len(arrays) - 1}}
+    if isinstance(node, dict):
+        if "vertices" in node and "faces" in node and "mesh" not in node and "op" not in node:
+            return _csg_document((node["vertices"], node["faces"]), arrays)
+        node = dict(node)
+        if isinstance(node.get("mesh"), (str, os.PathLike)):
+            node["mesh"] = os.fspath(node["mesh"])
+        if isinstance(node.get("args"), (list, tuple)):
+            node["args"] = [_csg_document(arg, arrays) for arg in node["args"]]
+    return node
+
+
+def csg(tree, kernel=DEFAULT_KERNEL, rounding="repaired", retriangulation="delaunay", check_self_intersections=True,
+        base=None):
+    """Evaluates a CSG tree of closed triangle meshes (``relgeo csg``).
+
+    tree: the path of a TREE.json file (its mesh files relative to its
+    folder, as the tool reads it), or the same document as a dict: a node is
+    ``{"op": "union" | "intersection" | "difference", "args": [node, ...]}``
+    (a difference is its first argument minus all the others) or a leaf:
+    ``{"mesh": "file.off"}`` (relative to ``base``, default the current
+    folder), a pair ``(V, F)`` of arrays, or ``{"vertices": V, "faces": F}``.
+    Kernels: "filtered" (default), "exact", "double".
+
+    Returns a dict: the root's solid ``V``, ``F`` (the last valid result when
+    a step failed) and the fields of ``relgeo csg --format json``: tree (the
+    file; absent for a dict), kernel, status ("ok" or "failed"), failure,
+    steps [{node, operation, ok, failure, faces, volume, validation,
+    rounding, seconds}], output {vertices, faces, volume}, seconds,
+    total_seconds. Raises ``InvalidCsgNode`` (an ``InvalidInput``, a
+    ``ValueError``) naming the node (``e.node``: "root.1") for an unknown
+    op, fewer than two arguments, a leaf that cannot be read or is not a
+    valid solid; ``UnreadableFile`` for a tree file that cannot be read or
+    is not JSON; ``ValueError`` for a bad kernel or option name. The GIL is
+    released while the tree is read and evaluated.
+    """
+    options = (kernel, rounding, retriangulation, check_self_intersections)
+    if isinstance(tree, (str, os.PathLike)):
+        return _relgeo.csg(os.fspath(tree), None, [], "", *options)
+    arrays = []
+    # What JSON cannot hold (an array outside a leaf) becomes a string, which
+    # the parser refuses naming the node.
+    text = json.dumps(_csg_document(tree, arrays), default=lambda o: f"<{type(o).__name__}>")
+    return _relgeo.csg(None, text, arrays, os.fspath(base) if base is not None else "", *options)
 
 
 # ---- extrusion ------------------------------------------------------------------------
@@ -238,3 +313,69 @@ def limit_mesh(V, F, levels=1, kernel="double", rules="hoppe"):
     every vertex moved to its point on the limit surface (``relgeo subdivide
     --limit``); arguments as ``loop_subdivide``."""
     return _relgeo.subdivide(V, F, levels, kernel, rules)["limit"]
+
+
+def limit_evaluate(V, F, face, u, v, kernel="double", rules="hoppe"):
+    """The point of the Loop limit surface of the control mesh (V, F) at the
+    parameter (u, v) of face ``face`` (relgeo::Loop_limit_surface: box
+    splines on regular patches, exact local subdivision elsewhere; the
+    point w a + u b + v c of face (a, b, c) when the surface is the face),
+    computed under ``kernel`` (those of ``loop_subdivide``; exact under
+    "exact", enclosed under "interval") and rounded to double.
+
+    face, u, v: scalars or arrays, broadcast against each other. Returns a
+    (3,) array for scalars, else an (n, 3) array. Raises ``InvalidInput``
+    for a face out of range or (u, v) outside the triangle u, v >= 0,
+    u + v <= 1, ``NonFiniteInput`` for NaN parameters, ``InvalidMesh`` for
+    a mesh Loop's scheme refuses, ``ValueError`` for bad names.
+    """
+    single = all(np.ndim(a) == 0 for a in (face, u, v))
+    face, u, v = (np.atleast_1d(a) for a in np.broadcast_arrays(np.asarray(face, dtype=np.int64),
+                                                                 np.asarray(u, dtype=np.float64),
+                                                                 np.asarray(v, dtype=np.float64)))
+    if face.ndim != 1:
+        raise ValueError(f"limit_evaluate: face, u and v must be scalars or 1-d arrays, not of shape {face.shape}")
+    points = _relgeo.limit_evaluate(V, F, face, u, v, kernel, rules)
+    return points[0] if single else points
+
+
+# ---- joining --------------------------------------------------------------------------
+
+def join(surface, meshes, method="whitney", kernel=DEFAULT_KERNEL, curves=(), output=None,
+         max_absolute_error=float("inf"), max_normal_error=float("inf"), edge_curves=True, layers=1, min_angle=0.0,
+         slope_margin=2.0**-30, extrapolation=0.05):
+    """Joins mesh patches to the trimmed faces of a surface model (thesis Ch.
+    4, ``relgeo join``).
+
+    surface: the model's file (a JSON relgeo-surface-model, doc/joining.md;
+    STEP/IGES when relgeo has OpenCASCADE). meshes: one patch per face, in
+    face order, each a mesh file or a pair (V, F) of arrays. method
+    "whitney" (default), "naive" or "occt"; kernel of the certified checks:
+    "failsafe", "interval", "filtered" (default), "exact". curves: edge-curve
+    JSON files; output: also write the joined mesh there. The criteria and
+    joiner parameters are the tool's options (``max_absolute_error``,
+    ``max_normal_error``, ``edge_curves=False`` for ``--no-edge-curves``,
+    ``layers``, ``min_angle`` (0: 20.7 degrees), ``slope_margin``,
+    ``extrapolation``).
+
+    Returns a dict: the joined mesh ``V``, ``F``, ``face_of_triangle`` (the
+    model face of each triangle, int64) and the fields of ``relgeo join
+    --format json`` (status "ok" or "failed" and failure, faces with the
+    errors before and after and the certified flip counts, summary,
+    criteria, ...; ``meshes`` names array patches "<arrays i>", ``output``
+    is "" when not written). Raises ``UnreadableFile`` for a missing or
+    malformed file, ``InvalidInput`` for meshes that do not project onto
+    their faces or do not fit the model, ``ValueError`` for bad options.
+    """
+    names, arrays = [], []
+    for i, mesh in enumerate(meshes):
+        if isinstance(mesh, (str, os.PathLike)):
+            names.append(os.fspath(mesh))
+            arrays.append(None)
+        else:
+            V, F = mesh
+            names.append(f"<arrays {i}>")
+            arrays.append((np.asarray(V, dtype=np.float64), np.asarray(F, dtype=np.int64)))
+    return _relgeo.join(os.fspath(surface), names, arrays, [os.fspath(c) for c in curves],
+                        os.fspath(output) if output is not None else "", method, kernel, max_absolute_error,
+                        max_normal_error, edge_curves, layers, min_angle, slope_margin, extrapolation)

@@ -50,6 +50,15 @@ class InvalidOperand(InvalidMesh):
     misoriented, degenerate or self-intersecting (relgeo::Invalid_operand)."""
 
 
+class InvalidCsgNode(InvalidInput):
+    """A CSG tree that cannot be evaluated (relgeo::Invalid_csg_node): an
+    unknown op, fewer than two arguments, a leaf that cannot be read or is
+    not a valid solid. ``node`` is the node's path: "root", "root.1" (root's
+    second argument), ..."""
+
+    node = None
+
+
 class PreconditionViolation(Error, ValueError):
     """The call broke a documented precondition (relgeo::Precondition_violation)."""
 
@@ -62,4 +71,4 @@ class SingularMatrix(Error, ValueError, numpy.linalg.LinAlgError):
 
 
 __all__ = ["Error", "InvalidInput", "NonFiniteInput", "UnreadableFile", "UnwritableFile",
-           "InvalidMesh", "InvalidOperand", "PreconditionViolation", "SingularMatrix"]
+           "InvalidMesh", "InvalidOperand", "InvalidCsgNode", "PreconditionViolation", "SingularMatrix"]

@@ -11,6 +11,7 @@
 #include "bindings.h"
 #include "cli/text.h"
 #include "relgeo/boolean/boolean_types.h"
+#include "relgeo/boolean/csg.h"
 #include "relgeo/io/errors.h"
 #include "relgeo/linear/gaussian_elimination.h"
 #include "relgeo/mesh/mesh_errors.h"
@@ -19,11 +20,13 @@ namespace relgeo::python {
 
 namespace {
 
-/// Raises relgeo.errors.<class_name>(e.what()) with `code` = e.code()'s name.
-void raise_as(const char* class_name, const Error& e) {
+/// Raises relgeo.errors.<class_name>(e.what()) with `code` = e.code()'s name
+/// (and `node` = the CSG node's path for InvalidCsgNode).
+void raise_as(const char* class_name, const Error& e, const std::string* node = nullptr) {
   py::object cls = py::module_::import("relgeo.errors").attr(class_name);
   py::object exception = cls(e.what());
   exception.attr("code") = std::string(to_string(e.code()));
+  if (node) exception.attr("node") = *node;
   PyErr_SetObject(cls.ptr(), exception.ptr());
 }
 
@@ -32,6 +35,8 @@ void translate(std::exception_ptr p) {
     std::rethrow_exception(p);
   } catch (const tool::Usage_error& e) {
     PyErr_SetString(PyExc_ValueError, e.what());
+  } catch (const Invalid_csg_node& e) {
+    raise_as("InvalidCsgNode", e, &e.node());
   } catch (const Invalid_operand& e) {
     raise_as("InvalidOperand", e);
   } catch (const Invalid_mesh& e) {

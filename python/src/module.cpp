@@ -12,6 +12,8 @@ PYBIND11_MODULE(_relgeo, m) {
   relgeo::python::bind_linear(m);
   relgeo::python::bind_mesh(m);
   relgeo::python::bind_boolean(m);
+  relgeo::python::bind_csg(m);
   relgeo::python::bind_extrusion(m);
   relgeo::python::bind_subdivision(m);
+  relgeo::python::bind_join(m);
 }

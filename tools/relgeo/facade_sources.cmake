@@ -20,4 +20,11 @@ set(relgeo_tool_facade_sources
   commands/subdivide/dispatch_exact.cpp
   commands/boolean/names.cpp
   commands/boolean/dispatch.cpp
-  commands/boolean/report.cpp)
+  commands/boolean/report.cpp
+  commands/boolean/dispatch_subdivision.cpp
+  commands/boolean/subdivision_report.cpp
+  commands/csg/dispatch.cpp
+  commands/csg/tree.cpp
+  commands/csg/report.cpp
+  commands/join/dispatch.cpp
+  commands/join/facade.cpp)

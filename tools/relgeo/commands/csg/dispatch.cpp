@@ -3,8 +3,8 @@
 // names kernel types).
 #include <algorithm>
 
-#include "commands/csg/command.h"
 #include "cli/text.h"
+#include "commands/csg/facade.h"
 #include "relgeo/boolean.h"
 #include "relgeo/kernel.h"
 

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/text.h"
+#include "relgeo/mesh/triangle_mesh.h"
 
 namespace CLI {
 class App;
@@ -17,6 +19,9 @@ namespace relgeo::tool {
 struct Join_tool_options {
   std::string surface;               ///< .json (relgeo-surface-model), .step/.stp/.iges/.igs with OpenCASCADE
   std::vector<std::string> meshes;   ///< one mesh patch per face, in face order (OFF, OBJ, PLY, STL)
+  /// Per mesh, its triangles when given in memory (the Python module): then
+  /// `meshes` only names it. Empty: every mesh is read from its file.
+  std::vector<std::optional<Mesh_double>> mesh_data;
   std::vector<std::string> curves;   ///< edge-curve files (JSON), optional
   std::string output;                ///< the joined mesh; empty: default_join_output
   std::string report;                ///< JSON report file, empty for none

@@ -84,6 +84,7 @@ Join_command_options library_options(const Join_tool_options& o, const std::stri
   Join_command_options c;
   c.surface = o.surface;
   c.meshes = o.meshes;
+  c.mesh_data = o.mesh_data;
   c.curves = o.curves;
   c.output = output;
   c.method = o.method;
@@ -126,6 +127,8 @@ Join_tool_result run_join_tool(const Join_tool_options& options, const std::stri
     r.report = cr.report;
     r.json = to_json(cr);
     r.kernel_model = K::name();
+    r.mesh = cr.mesh;
+    r.face_of_triangle = cr.face_of_triangle;
     if (pictures) r.pictures = face_pictures<K>(cr.model, cr, c.join.projection);
     return r;
   });

@@ -41,6 +41,8 @@ struct Join_tool_result {
   io::Json json;                       ///< to_json(Join_command_report) (run_with.h)
   std::string kernel_model;            ///< K::name()
   std::vector<Join_face_picture> pictures;  ///< per face, when asked for
+  Mesh_double mesh;                         ///< the joined mesh
+  std::vector<Index> face_of_triangle;      ///< the model face of each of its triangles
 };
 
 /// Reads, joins and writes `output` as run_join_with (run_with.h) does, under
@@ -50,6 +52,17 @@ struct Join_tool_result {
 /// \throws relgeo::Error as run_join_with does, Usage_error for a kernel join
 /// does not take.
 Join_tool_result run_join_tool(const Join_tool_options& options, const std::string& output, bool pictures);
+
+/// Throws Usage_error for options `relgeo join` refuses (no surface, no
+/// mesh, a bad method, kernel or joiner parameter); the library checks the
+/// files.                                                  [facade.cpp]
+void validate_join_options(const Join_tool_options& options);
+/// run_join_tool, its typed errors rewritten to say which step they belong
+/// to (a mesh that does not project onto its face, meshes that do not fit
+/// the model), as `relgeo join` reports them.             [facade.cpp]
+Join_tool_result run_join_explained(const Join_tool_options& options, const std::string& output, bool pictures);
+/// The record of `relgeo join --format json` (without "svg").   [facade.cpp]
+io::Json join_report_json(const Join_tool_options& options, const std::string& output, const Join_tool_result& result);
 
 /// The largest of a per-face measure over a report's faces (0 for none).
 template <class F>

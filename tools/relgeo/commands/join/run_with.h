@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +38,9 @@ struct Join_command_options {
   std::string surface;
   /// One mesh patch per face, in the model's face order (.off/.obj/.ply/.stl).
   std::vector<std::string> meshes;
+  /// Per mesh, its triangles when given in memory (then `meshes` only names
+  /// it); empty: every mesh is read from its file.
+  std::vector<std::optional<Triangle_mesh<Point_3<double>>>> mesh_data;
   /// Files giving edges their 3D curves (read_edge_curves_json); optional.
   std::vector<std::string> curves;
   /// The joined mesh (.off/.obj/.ply/.stl); empty: not written.
@@ -99,7 +103,9 @@ Join_command_report run_join_with(const Join_command_options& o) {
   Surface_model model = read_surface_model(o.surface);
   for (const std::string& c : o.curves) read_edge_curves_json(c, model);
   std::vector<Triangle_mesh<Point_3<double>>> meshes;
-  for (const std::string& m : o.meshes) meshes.push_back(read_mesh(m, {.triangulate_polygons = true}));
+  for (std::size_t i = 0; i < o.meshes.size(); ++i)
+    meshes.push_back(i < o.mesh_data.size() && o.mesh_data[i] ? *o.mesh_data[i]
+                                                              : read_mesh(o.meshes[i], {.triangulate_polygons = true}));
   r.faces = model.faces.size();
   Join_result result;
   if (o.method == "whitney") {

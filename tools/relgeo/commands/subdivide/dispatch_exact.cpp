@@ -12,6 +12,17 @@ bool run_subdivision_exact_kernels(const Mesh_double& input, const Subdivision_r
   return true;
 }
 
+bool evaluate_limit_surface_exact_kernels(const std::string& kernel, const Mesh_double& control,
+                                          const std::vector<std::int64_t>& faces, const std::vector<double>& u,
+                                          const std::vector<double>& v, const Loop_options& options,
+                                          std::vector<Point_3<double>>& points) {
+  const Kernel_entry& k = find_kernel(kernel);
+  if (!admits_kernel<Subdivision_exact_kernels>(k)) return false;
+  points = with_kernel<Subdivision_exact_kernels>(
+      k, [&]<class K>(const K&) { return evaluate_limit_surface_with<K>(control, faces, u, v, options); });
+  return true;
+}
+
 void exact_reference(const Mesh_double& input, unsigned levels, const Loop_options& options, int samples,
                      std::vector<Point_3<double>>& surface, std::vector<Point_3<double>>& limit_vertices) {
   using namespace subdivision_detail;

@@ -49,3 +49,21 @@ Subdivision_result run_subdivision(const Mesh_double& input, const Subdivision_r
 }
 
 }  // namespace relgeo::tool
+
+namespace relgeo::tool {
+
+std::vector<Point_3<double>> evaluate_limit_surface(const std::string& kernel, const Mesh_double& control,
+                                                    const std::vector<std::int64_t>& faces,
+                                                    const std::vector<double>& u, const std::vector<double>& v,
+                                                    const Loop_options& options) {
+  validate_subdivision_kernel(kernel);
+  if (u.size() != faces.size() || v.size() != faces.size())
+    throw Precondition_violation("evaluate_limit_surface: as many u and v as faces are needed");
+  std::vector<Point_3<double>> points;
+  if (evaluate_limit_surface_exact_kernels(kernel, control, faces, u, v, options, points)) return points;
+  return with_kernel<Subdivision_float_kernels>(find_kernel(kernel), [&]<class K>(const K&) {
+    return evaluate_limit_surface_with<K>(control, faces, u, v, options);
+  });
+}
+
+}  // namespace relgeo::tool

@@ -5,6 +5,7 @@
 // only).
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -75,6 +76,19 @@ struct Subdivision_result {
 /// samples the limit surface and computes the bounds. Throws relgeo::Error
 /// for bad meshes, Usage_error for an unsupported kernel.
 Subdivision_result run_subdivision(const Mesh_double& input, const Subdivision_request& request);
+
+/// The points of the limit surface of `control` (relgeo::Loop_limit_surface)
+/// at the parameters (faces[i], u[i], v[i]) (the point w a + u b + v c of
+/// face (a, b, c) when the surface is the face), under the kernel named
+/// (one of subdivision_kernel_names()), rounded to double.
+/// \throws Invalid_surface_parameter for a face out of range or (u, v)
+/// outside the triangle, Non_finite_input for NaN parameters or coordinates,
+/// Invalid_mesh for a mesh Loop's scheme refuses, Usage_error for a kernel
+/// without constructions.                [dispatch_float.cpp, dispatch_exact.cpp]
+std::vector<Point_3<double>> evaluate_limit_surface(const std::string& kernel, const Mesh_double& control,
+                                                    const std::vector<std::int64_t>& faces,
+                                                    const std::vector<double>& u, const std::vector<double>& v,
+                                                    const Loop_options& options);
 
 /// Samples of the exact (GMP rational) limit surface of `input` over every
 /// face of its level-`levels` refinement (dyadic grid `samples` per side, in

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,12 @@ struct Subdivision_exact_kernels {
 /// kernel is not one of its kernels.
 bool run_subdivision_exact_kernels(const Mesh_double& input, const Subdivision_request& request,
                                    Subdivision_result& result);
+/// The exact half of evaluate_limit_surface's dispatch (dispatch_exact.cpp);
+/// false when the kernel is not one of its kernels.
+bool evaluate_limit_surface_exact_kernels(const std::string& kernel, const Mesh_double& control,
+                                          const std::vector<std::int64_t>& faces, const std::vector<double>& u,
+                                          const std::vector<double>& v, const Loop_options& options,
+                                          std::vector<Point_3<double>>& points);
 
 namespace subdivision_detail {
 
@@ -78,7 +85,38 @@ inline Point_3<double> face_point(const Mesh_double& m, Index f, double u, doubl
   return {w * a.x + u * b.x + v * c.x, w * a.y + u * b.y + v * c.y, w * a.z + u * b.z + v * c.z};
 }
 
+/// `input` in the kernel's points.
+template <class K>
+Triangle_mesh<typename K::Point_3> kernel_mesh(const Mesh_double& input) {
+  const auto cp = K().construct_point_3_object();
+  Triangle_mesh<typename K::Point_3> m;
+  m.vertices.reserve(input.vertices.size());
+  for (const auto& p : input.vertices) m.vertices.push_back(cp(p.x, p.y, p.z));
+  m.faces = input.faces;
+  m.tags = input.tags;
+  return m;
+}
+
 }  // namespace subdivision_detail
+
+/// evaluate_limit_surface (facade.h) under K.
+template <class K>
+std::vector<Point_3<double>> evaluate_limit_surface_with(const Mesh_double& control,
+                                                         const std::vector<std::int64_t>& faces,
+                                                         const std::vector<double>& u, const std::vector<double>& v,
+                                                         const Loop_options& options) {
+  using namespace subdivision_detail;
+  const Loop_limit_surface<K> surface(kernel_mesh<K>(control), options);
+  std::vector<Point_3<double>> points;
+  points.reserve(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    if (faces[i] < 0 || static_cast<std::uint64_t>(faces[i]) >= surface.number_of_faces())
+      throw Invalid_surface_parameter("Loop limit surface: face " + std::to_string(faces[i]) + " out of range (" +
+                                      std::to_string(surface.number_of_faces()) + " faces)");
+    points.push_back(to_double(surface.evaluate(static_cast<Index>(faces[i]), u[i], v[i])));
+  }
+  return points;
+}
 
 template <class K>
 Subdivision_result run_subdivision_with(const Mesh_double& input, const Subdivision_request& rq) {
@@ -88,13 +126,7 @@ Subdivision_result run_subdivision_with(const Mesh_double& input, const Subdivis
   Subdivision_result res;
   res.kernel = find_kernel(rq.kernel).label();
   res.kernel_model = K::name();
-  const K kernel;
-  const auto cp = kernel.construct_point_3_object();
-  Triangle_mesh<P> m;
-  m.vertices.reserve(input.vertices.size());
-  for (const auto& p : input.vertices) m.vertices.push_back(cp(p.x, p.y, p.z));
-  m.faces = input.faces;
-  m.tags = input.tags;
+  const Triangle_mesh<P> m = kernel_mesh<K>(input);
 
   internal::Stopwatch clock;
   Loop_subdivider<K> subdivider(rq.options);

@@ -1,0 +1,40 @@
+// tools/relgeo/commands/csg/report.cpp — the JSON record of a CSG evaluation
+// (`relgeo csg --format json`, the Python module's csg()).
+#include "commands/boolean/report.h"
+
+#include <string>
+
+#include "commands/csg/facade.h"
+
+namespace relgeo::tool {
+
+io::Json csg_report_json(const std::string& tree, const std::string& kernel, const std::string& rounding,
+                         const Csg_result& r, double total_seconds) {
+  // The double kernel is not certified: its Booleans round to nearest.
+  const std::string method = kernel == "double" ? "nearest" : rounding;
+  io::Json steps = io::Json::array();
+  for (const Csg_step& s : r.steps) {
+    steps.push_back({{"node", s.node},
+                     {"operation", std::string(to_string(s.operation))},
+                     {"ok", s.ok},
+                     {"failure", s.failure},
+                     {"faces", s.faces},
+                     {"volume", io::json_measure(s.volume)},
+                     {"validation", s.validation},
+                     {"rounding", rounding_repair_json(s.rounding, method)},
+                     {"seconds", s.seconds}});
+  }
+  return io::Json{{"tree", tree},
+                  {"kernel", kernel},
+                  {"status", r.ok() ? "ok" : "failed"},
+                  {"failure", r.failure},
+                  {"steps", steps},
+                  {"output",
+                   {{"vertices", r.mesh.vertices.size()},
+                    {"faces", r.mesh.faces.size()},
+                    {"volume", io::json_measure(r.steps.empty() ? 0.0 : r.steps.back().volume)}}},
+                  {"seconds", r.seconds},
+                  {"total_seconds", total_seconds}};
+}
+
+}  // namespace relgeo::tool

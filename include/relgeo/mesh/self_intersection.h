@@ -107,14 +107,17 @@ inline void sort_hits(const std::vector<Self_intersection_hit>& hits, Self_inter
 /// The narrow phase on candidate pairs from `bvh`, for points already in K
 /// and faces flagged degenerate (1), undecided (2) or testable (0). Pairs
 /// sharing a vertex flagged in `embedded` (embedded_star_flags) are decided
-/// by that certificate.
+/// by that certificate, and pairs of faces in one nonzero `group`
+/// (Certified_faces::group, below) by theirs.
 template <Kernel K, class Points>
 void find_self_intersections(const K& k, const Points& point, const std::vector<Triangle>& faces,
                              const std::vector<unsigned char>& skip, const Face_bvh& bvh, int threads,
-                             Self_intersections& out, const std::vector<unsigned char>* embedded = nullptr) {
+                             Self_intersections& out, const std::vector<unsigned char>* embedded = nullptr,
+                             const std::vector<std::uint8_t>* group = nullptr) {
   const std::vector<Self_intersection_hit> hits = bvh.collect_overlapping_pairs<Self_intersection_hit>(
       [&](Index f, Index g, std::vector<Self_intersection_hit>& found) {
         if (skip[f] || skip[g]) return;
+        if (group && (*group)[f] && (*group)[f] == (*group)[g]) return;
         if (embedded && share_embedded_star(faces[f], faces[g], *embedded)) return;
         test_face_pair(k, point, faces, f, g, found);
       },
@@ -137,13 +140,14 @@ struct Certified_faces {
 /// The narrow phase on what the certificates leave open: every pair with a
 /// face outside the groups (those faces' boxes searched in `bvh`), and the
 /// cross pairs. Two faces of one group meet only where they share a vertex
-/// or an edge, as in their certified mesh. `boxes`: the faces' boxes, in
-/// face order.
+/// or an edge, as in their certified mesh; pairs sharing a vertex flagged
+/// in `embedded` are decided by that certificate. `boxes`: the faces'
+/// boxes, in face order.
 template <Kernel K, class Points>
 void find_self_intersections(const K& k, const Points& point, const std::vector<Triangle>& faces,
                              const std::vector<unsigned char>& skip, const Face_bvh& bvh,
                              const std::vector<Box_3>& boxes, const Certified_faces& certified, int threads,
-                             Self_intersections& out) {
+                             Self_intersections& out, const std::vector<unsigned char>* embedded = nullptr) {
   std::vector<Index> open;
   std::vector<Box_3> open_boxes;
   for (Index f = 0; f < faces.size(); ++f)
@@ -153,10 +157,13 @@ void find_self_intersections(const K& k, const Points& point, const std::vector<
     const Index f = open[i];
     // A pair of two open faces is met twice: kept from its smaller face.
     if (g == f || skip[g] || (!certified.group[g] && g < f)) continue;
+    if (embedded && share_embedded_star(faces[f], faces[g], *embedded)) continue;
     pairs.push_back({std::min(f, g), std::max(f, g)});
   }
   for (const Face_pair& p : certified.cross_pairs)
-    if (!skip[p.first] && !skip[p.second]) pairs.push_back(p);
+    if (!skip[p.first] && !skip[p.second] &&
+        !(embedded && share_embedded_star(faces[p.first], faces[p.second], *embedded)))
+      pairs.push_back(p);
   out.candidate_pairs = pairs.size();
   // Fixed chunks: the same hits whatever the thread count.
   constexpr std::size_t chunk = 1024;

@@ -43,10 +43,12 @@
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/mesh/face_bvh.h"
 #include "relgeo/mesh/internal/component_winding.h"
+#include "relgeo/mesh/internal/embedded_stars.h"
 #include "relgeo/mesh/internal/exact_volume.h"
 #include "relgeo/mesh/internal/kernel_points.h"
 #include "relgeo/mesh/internal/mesh_components.h"
 #include "relgeo/mesh/mesh_errors.h"
+#include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/self_intersection.h"
 #include "relgeo/mesh/triangle_mesh.h"
 #include "relgeo/mesh/validity.h"
@@ -318,6 +320,19 @@ void report_orientation(const K& k, const Triangle_mesh<P>& m, const Points& poi
 
 namespace internal {
 
+/// 1 for every face sharing a vertex with a face outside the certified
+/// groups (Certified_faces): the faces whose stars the test can use.
+template <class P>
+std::vector<unsigned char> faces_around_open_faces(const Triangle_mesh<P>& m, const std::vector<std::uint8_t>& group) {
+  std::vector<unsigned char> open_vertex(m.vertices.size(), 0), around(m.faces.size(), 0);
+  for (Index f = 0; f < m.faces.size(); ++f)
+    if (!group[f])
+      for (Index v : m.faces[f]) open_vertex[v] = 1;
+  for (Index f = 0; f < m.faces.size(); ++f)
+    for (Index v : m.faces[f]) around[f] |= open_vertex[v];
+  return around;
+}
+
 /// validate_solid, except that the self-intersection test leaves to the
 /// caller's certificates what they decide (Certified_faces: pairs of faces
 /// kept unchanged from one certified mesh). nullptr: every pair is tested.
@@ -329,7 +344,8 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
   r.vertices = m.vertices.size(), r.faces = m.faces.size();
   // check_mesh's checks but the collinearity test, decided below under K on
   // K's points (with the degenerate faces the self-intersection test skips).
-  const Mesh_report mr = internal::combinatorial_mesh_report(m, o.mesh);
+  Mesh_topology topology;
+  const Mesh_report mr = internal::combinatorial_mesh_report(m, o.mesh, topology);
   internal::sort_mesh_issues(mr, o, r);
 
   const bool indices_ok = r.valid_indices.passed();
@@ -346,7 +362,19 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
   // Degenerate faces under K (repeated indices are already recorded).
   const internal::Kernel_points<K, P> point(m.vertices, k);
   r.coordinates_exact = point.exact();
-  const std::vector<unsigned char> skip = internal::degenerate_face_flags(k, point, m.faces);
+  // On a manifold, consistently oriented mesh the self-intersection test
+  // certifies the pairs around each vertex whose star a projection embeds
+  // (internal/embedded_stars.h, as check_solid does): that needs every
+  // projection of the faces around it, the degeneracy test only the first
+  // strict one. With certificates only the stars of the faces left to test
+  // matter.
+  const bool stars = o.check_self_intersections && r.edge_manifold.passed() && r.vertex_manifold.passed() &&
+                     r.consistently_oriented.passed();
+  std::vector<unsigned char> around_open;
+  if (stars && certified) around_open = internal::faces_around_open_faces(m, certified->group);
+  const std::vector<std::array<Certified_sign, 3>> projected = internal::projected_orientations(
+      k, point, m.faces, /*every_plane=*/stars, certified && stars ? &around_open : nullptr);
+  const std::vector<unsigned char> skip = internal::degenerate_face_flags(projected);
   bool undecided_face = false;
   for (Index f = 0; f < skip.size(); ++f) {
     const Triangle& t = m.faces[f];
@@ -372,15 +400,29 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
     return r;
   }
   Self_intersections si;
+  std::vector<unsigned char> embedded;
+  if (stars) embedded = internal::embedded_star_flags(k, point, m.faces, projected, skip, topology);
+  const std::vector<unsigned char>* star_flags = stars ? &embedded : nullptr;
   const Face_bvh bvh = [&] {
     if (!certified) {
       Face_bvh all(m, {.threads = o.threads});
-      internal::find_self_intersections(k, point, m.faces, skip, all, o.threads, si);
+      internal::find_self_intersections(k, point, m.faces, skip, all, o.threads, si, star_flags);
+      return all;
+    }
+    // Few faces left to test (a small operand cut into a large one): their
+    // boxes searched in the hierarchy, and the cross pairs. Many: the
+    // hierarchy's own pairs but those within one group (the traversal then
+    // costs less than searching each box).
+    const auto kept = static_cast<std::size_t>(
+        std::count_if(certified->group.begin(), certified->group.end(), [](std::uint8_t g) { return g != 0; }));
+    if (4 * (m.faces.size() - kept) >= m.faces.size()) {
+      Face_bvh all(m, {.threads = o.threads});
+      internal::find_self_intersections(k, point, m.faces, skip, all, o.threads, si, star_flags, &certified->group);
       return all;
     }
     const std::vector<Box_3> boxes = face_boxes(m);
     Face_bvh all(boxes, {.threads = o.threads});
-    internal::find_self_intersections(k, point, m.faces, skip, all, boxes, *certified, o.threads, si);
+    internal::find_self_intersections(k, point, m.faces, skip, all, boxes, *certified, o.threads, si, star_flags);
     return all;
   }();
   r.candidate_pairs = si.candidate_pairs;

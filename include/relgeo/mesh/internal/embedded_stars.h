@@ -56,11 +56,12 @@ typename K::Point_2 project_to_plane(const typename K::Point_3& p, int plane) {
 /// Faces with a repeated vertex get `zero` in all three. Without
 /// `every_plane` a face's planes after its first strict sign are left
 /// `uncertain` (not computed): enough to tell degenerate faces, not for
-/// embedded_star_flags.
+/// embedded_star_flags (whose stars of such faces are then not certified).
+/// `every_plane_of`, when given, asks every plane of the faces it flags only.
 template <class K, class Points>
-std::vector<std::array<Certified_sign, 3>> projected_orientations(const K& k, const Points& point,
-                                                                  const std::vector<Triangle>& faces,
-                                                                  bool every_plane = true) {
+std::vector<std::array<Certified_sign, 3>> projected_orientations(
+    const K& k, const Points& point, const std::vector<Triangle>& faces, bool every_plane = true,
+    const std::vector<unsigned char>* every_plane_of = nullptr) {
   const auto orient = k.orientation_2_object();
   std::vector<std::array<Certified_sign, 3>> s(faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -73,7 +74,7 @@ std::vector<std::array<Certified_sign, 3>> projected_orientations(const K& k, co
     for (int plane = 0; plane < 3; ++plane) {
       s[f][plane] = orient(project_to_plane<K>(point[t[0]], plane), project_to_plane<K>(point[t[1]], plane),
                            project_to_plane<K>(point[t[2]], plane));
-      if (!every_plane &&
+      if (!(every_plane && (!every_plane_of || (*every_plane_of)[f])) &&
           (certainly(s[f][plane], Certified_sign::positive) || certainly(s[f][plane], Certified_sign::negative)))
         break;
     }

@@ -36,17 +36,17 @@ bool finite_tuple(std::size_t i, const Rows&... rows) {
   return finite;
 }
 
-/// Whether count doubles from v are all finite: one branch-free pass over
-/// the high words (a 64-bit compare does not vectorise on x86-64's baseline
-/// SSE2; this does: 1.1 ns per triple, against 3.7).
+/// Whether count doubles from v are all finite: one branch-free pass of
+/// 64-bit integer additions (x86-64's baseline SSE2 has no 64-bit compare,
+/// but adds, ands and ors of 64-bit lanes vectorise): one more than an
+/// all-ones exponent carries into the sign bit. No floating-point
+/// operation, so no exception flag or trap on a signalling NaN.
 bool all_finite(const double* v, std::size_t count) {
-  constexpr std::uint32_t exponent = 0x7ff00000;
-  std::uint32_t special = 0;
-  for (std::size_t k = 0; k < count; ++k) {
-    const auto high = static_cast<std::uint32_t>(std::bit_cast<std::uint64_t>(v[k]) >> 32);
-    special |= static_cast<std::uint32_t>((high & exponent) == exponent);
-  }
-  return special == 0;
+  constexpr std::uint64_t exponent = 0x7ff0000000000000, exponent_one = 0x0010000000000000,
+                          sign = 0x8000000000000000;
+  std::uint64_t special = 0;
+  for (std::size_t k = 0; k < count; ++k) special |= (std::bit_cast<std::uint64_t>(v[k]) & exponent) + exponent_one;
+  return (special & sign) == 0;
 }
 
 /// Whether rows [begin, end) of `rows` are finite.
@@ -70,22 +70,48 @@ void require_finite_tuples(const char* who, std::size_t begin, std::size_t end, 
       throw Non_finite_input(std::string(who) + ": tuple " + std::to_string(i) + " has a NaN or infinite coordinate");
 }
 
+/// Rows of a C-contiguous (n, Dimension) array: the strides known to the
+/// compiler (numpy's default layout; 0.6 ns per triple less than strided
+/// indexing on orient2d's double kernel).
+template <int Dimension>
+struct Contiguous_rows {
+  const double* data;
+  double operator()(std::size_t row, int column) const { return data[row * Dimension + column]; }
+};
+
+template <int Dimension>
+bool contiguous(const Coordinate_rows& rows) {
+  return rows.row_stride == Dimension && rows.column_stride == 1;
+}
+
+template <class K, class Rows>
+void orientation_2_loop(const K& k, const Rows& p, const Rows& q, const Rows& r, const Coordinate_rows (&rows)[3],
+                        std::size_t n, std::int8_t* out) {
+  const auto point = k.construct_point_2_object();
+  const auto orientation = k.orientation_2_object();
+  for (std::size_t begin = 0; begin < n; begin += block_size) {
+    const std::size_t end = std::min(n, begin + block_size);
+    require_finite_tuples<2>("orient2d", begin, end, rows[0], rows[1], rows[2]);
+    for (std::size_t i = begin; i < end; ++i)
+      out[i] = static_cast<std::int8_t>(
+          orientation(point(p(i, 0), p(i, 1)), point(q(i, 0), q(i, 1)), point(r(i, 0), r(i, 1))));
+  }
+}
+
 }  // namespace
 
 void orientation_2_signs(std::string_view kernel, Coordinate_rows p, Coordinate_rows q, Coordinate_rows r,
                          std::size_t n, std::int8_t* out) {
+  const Coordinate_rows rows[3] = {p, q, r};
   tool::with_kernel(kernel, [&]<class K>(const K& k) {
-    const auto point = k.construct_point_2_object();
-    const auto orientation = k.orientation_2_object();
-    for (std::size_t begin = 0; begin < n; begin += block_size) {
-      const std::size_t end = std::min(n, begin + block_size);
-      require_finite_tuples<2>("orient2d", begin, end, p, q, r);
-      for (std::size_t i = begin; i < end; ++i)
-        out[i] = static_cast<std::int8_t>(
-            orientation(point(p(i, 0), p(i, 1)), point(q(i, 0), q(i, 1)), point(r(i, 0), r(i, 1))));
-    }
+    if (contiguous<2>(p) && contiguous<2>(q) && contiguous<2>(r))
+      orientation_2_loop(k, Contiguous_rows<2>{p.data}, Contiguous_rows<2>{q.data}, Contiguous_rows<2>{r.data}, rows,
+                         n, out);
+    else
+      orientation_2_loop(k, p, q, r, rows, n, out);
   });
 }
+
 
 void orientation_3_signs(std::string_view kernel, Coordinate_rows p, Coordinate_rows q, Coordinate_rows r,
                          Coordinate_rows s, std::size_t n, std::int8_t* out) {

@@ -166,6 +166,20 @@ def test_non_finite_coordinates_raise(bad):
         relgeo.orient3d(np.zeros((600, 3)), np.ones((600, 3)), strided[:, 2:5], np.eye(3)[[0] * 600])
 
 
+def test_the_largest_and_smallest_doubles_are_finite():
+    # the check reads exponent bits: the largest finite double, the smallest
+    # subnormal and -0.0 pass; an infinity or a NaN with any payload or sign is
+    # refused, whatever the block it falls in
+    edge = np.array([[np.finfo(float).max, -np.finfo(float).max], [5e-324, -0.0]] * 300)
+    signs = relgeo.orient2d(edge, np.ones((600, 2)), np.zeros((600, 2)), kernel="exact")
+    assert np.array_equal(signs, relgeo.orient2d(edge, np.ones((600, 2)), np.zeros((600, 2)), kernel="filtered"))
+    for bits in (0x7FF0000000000000, 0xFFF0000000000000, 0x7FF0000000000001, 0xFFFFFFFFFFFFFFFF, 0x7FF8000000000000):
+        bad = edge.copy()
+        bad.view(np.uint64)[513, 1] = bits
+        with pytest.raises(relgeo.NonFiniteInput, match="tuple 513 "):
+            relgeo.orient2d(bad, np.ones((600, 2)), np.zeros((600, 2)), kernel="double")
+
+
 def test_wrong_shapes_raise_value_error():
     with pytest.raises(ValueError, match=r"shape \(2,\) or \(n, 2\)"):
         relgeo.orient2d(np.zeros((4, 3)), np.zeros((4, 2)), np.zeros((4, 2)))

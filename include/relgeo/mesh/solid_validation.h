@@ -163,8 +163,9 @@ struct Solid_report {
   std::optional<long long> genus;  ///< sum over components, when defined
   Solid_volume volume;
   std::vector<Solid_component> component_list;  ///< the first max_listed components
-  /// Pairs of faces whose boxes overlap (the self-intersection test's work;
-  /// when certificates decide some, those left to test).
+  /// Pairs of faces whose boxes overlap that the self-intersection test
+  /// visited (with certified faces, the search may leave out pairs their
+  /// certificates decide).
   std::size_t candidate_pairs = 0;
   /// The kernel's points are the coordinates exactly (false: rounded to its
   /// number type first; the geometric checks are about the rounded mesh).
@@ -400,6 +401,9 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
     return r;
   }
   Self_intersections si;
+  const auto kept = certified ? static_cast<std::size_t>(std::count_if(certified->group.begin(), certified->group.end(),
+                                                                       [](std::uint8_t g) { return g != 0; }))
+                              : std::size_t{0};
   std::vector<unsigned char> embedded;
   if (stars) embedded = internal::embedded_star_flags(k, point, m.faces, projected, skip, topology);
   const std::vector<unsigned char>* star_flags = stars ? &embedded : nullptr;
@@ -413,8 +417,6 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
     // boxes searched in the hierarchy, and the cross pairs. Many: the
     // hierarchy's own pairs but those within one group (the traversal then
     // costs less than searching each box).
-    const auto kept = static_cast<std::size_t>(
-        std::count_if(certified->group.begin(), certified->group.end(), [](std::uint8_t g) { return g != 0; }));
     if (4 * (m.faces.size() - kept) >= m.faces.size()) {
       Face_bvh all(m, {.threads = o.threads});
       internal::find_self_intersections(k, point, m.faces, skip, all, o.threads, si, star_flags, &certified->group);
@@ -433,14 +435,10 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
   internal::conclude(r.self_intersection_free, si.pairs.empty());
   const std::size_t untested = r.non_degenerate_faces.count;
   if (untested) r.self_intersection_free.note = std::to_string(untested) + " degenerate or undecided faces not tested";
-  if (certified) {
-    const auto kept = static_cast<std::size_t>(
-        std::count_if(certified->group.begin(), certified->group.end(), [](std::uint8_t g) { return g != 0; }));
-    if (kept) {
-      if (!r.self_intersection_free.note.empty()) r.self_intersection_free.note += "; ";
-      r.self_intersection_free.note += "pairs among the " + std::to_string(kept) +
-                                       " faces kept unchanged from one certified mesh decided by its certificate";
-    }
+  if (kept) {
+    if (!r.self_intersection_free.note.empty()) r.self_intersection_free.note += "; ";
+    r.self_intersection_free.note += "pairs among the " + std::to_string(kept) +
+                                     " faces kept unchanged from one certified mesh decided by its certificate";
   }
   if (undecided_face && r.self_intersection_free.passed()) r.self_intersection_free.status = Check_status::undecided;
 

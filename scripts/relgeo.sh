@@ -44,6 +44,18 @@ packages=(
 
 log() { printf '[relgeo] %s\n' "$*" >&2; }
 
+# Wall time of each phase of a command (install, build, ctest, ...), logged as
+# it ends and summed up at the end: CI's log then says where its time went.
+phase_started=$SECONDS
+phase_summary=()
+phase_done() {
+  local took=$((SECONDS - phase_started))
+  phase_summary+=("$1 $((took / 60))m$((took % 60))s")
+  log "phase $1: ${took} s"
+  phase_started=$SECONDS
+}
+phase_report() { log "phases: ${phase_summary[*]} (total $((SECONDS / 60))m$((SECONDS % 60))s)"; }
+
 install_missing() {
   local missing=()
   for p in "${packages[@]}"; do
@@ -319,14 +331,19 @@ stop_at_cpu_seconds() {
 run_tests() {
   configure "$build"
   cmake --build "$build" -j "$jobs"
+  phase_done build
   (cd "$build" && ctest --output-on-failure -j "$jobs")
+  phase_done ctest
   run_sanitized_tests
+  phase_done sanitizers
   run_fuzz_smoke
+  phase_done "fuzz-smoke"
+  phase_report
 }
 
 case "${1:-}" in
   experiment) install_missing; run_experiment ;;
-  test) install_missing; run_tests ;;
+  test) install_missing; phase_done install; run_tests ;;
   sanitize) install_missing; run_sanitized_tests ;;
   fuzz-smoke) install_missing; run_fuzz_smoke ;;
   fuzz) shift; install_missing; run_fuzz_campaign "$@" ;;

@@ -62,19 +62,50 @@ def run_orientation_task(task):
     ones (relgeo's exact kernel), counted as relgeo::analysis::Sign_tally
     counts, and the time of the kernel's call. Never raises: an exception is
     the row's ``error``."""
-    row = dict(task, error=None)
+    return run_orientation_shard([task])[0]
+
+
+def run_orientation_shard(tasks):
+    """The tasks of one shard (one workload, size and seed; a kernel each):
+    its cases generated once, the exact signs computed once, then each
+    kernel's signs against them; the rows in the tasks' order. An exception
+    is the ``error`` of the rows it concerns (every row when the shard itself
+    fails, that kernel's row when a kernel does)."""
+    first = tasks[0]
     try:
-        points = _relgeo.orientation_workloads(task["dimension"], task["cases"], task["seed"])[task["workload"]]
-        signs = _relgeo.orient2d if task["dimension"] == 2 else _relgeo.orient3d
-        start = time.perf_counter()
-        answers = signs(*points, task["kernel"])
-        elapsed = time.perf_counter() - start
-        row.update(_relgeo.sign_tally(answers, signs(*points, "exact")))
-        row["time_s"] = elapsed
-        row["ns_per_call"] = 1e9 * elapsed / max(task["cases"], 1)
+        points = _relgeo.orientation_workloads(first["dimension"], first["cases"], first["seed"],
+                                               first["workload"])[first["workload"]]
+        signs = _relgeo.orient2d if first["dimension"] == 2 else _relgeo.orient3d
+        exact = signs(*points, "exact")
     except Exception as e:  # reported in the table, not fatal to the sweep
-        row["error"] = f"{type(e).__name__}: {e}"
-    return row
+        return [_error_row(task, e) for task in tasks]
+    rows = []
+    for task in tasks:
+        row = dict(task, error=None)
+        try:
+            start = time.perf_counter()
+            answers = signs(*points, task["kernel"])
+            elapsed = time.perf_counter() - start
+            row.update(_relgeo.sign_tally(answers, exact))
+            row["time_s"] = elapsed
+            row["ns_per_call"] = 1e9 * elapsed / max(task["cases"], 1)
+        except Exception as e:
+            row = _error_row(task, e)
+        rows.append(row)
+    return rows
+
+
+def _shards(tasks):
+    """The tasks grouped by shard (consecutive tasks of one workload,
+    dimension, size and seed: orientation_tasks puts the kernels innermost)."""
+    groups = []
+    for task in tasks:
+        key = (task["workload"], task["dimension"], task["size"], task["cases"], task["seed"])
+        if groups and groups[-1][0] == key:
+            groups[-1][1].append(task)
+        else:
+            groups.append((key, [task]))
+    return [group for _, group in groups]
 
 
 @contextlib.contextmanager
@@ -91,6 +122,10 @@ def _client(scheduler, n_workers, threads_per_worker):
 
 
 def _error_row(task, error):
+    """The task's fields with ``error``; a row for each task of a group (a
+    list of tasks run as one)."""
+    if isinstance(task, list):
+        return [_error_row(t, error) for t in task]
     return dict(task, error=f"{type(error).__name__}: {error}")
 
 
@@ -99,7 +134,8 @@ def run_tasks(run, tasks, scheduler=None, n_workers=2, threads_per_worker=1, pro
     processes (scheduler=None), on the cluster at a scheduler address
     ("tcp://host:8786"), or here, one after another (scheduler="serial").
     Returns the rows in the tasks' order; a task whose future fails (its
-    worker died, say) gives its task's fields with ``error``."""
+    worker died, say) gives its task's fields with ``error`` (a task may be
+    a list of tasks that ``run`` runs together: it gives a list of rows)."""
     if scheduler == "serial":
         return [run(task) for task in tasks]
     with _client(scheduler, n_workers, threads_per_worker) as client:
@@ -125,9 +161,13 @@ def orientation_sweep(kernels, sizes, workloads=None, dimension=2, seed=1, shard
     workloads (the families of ``relgeo experiment`` and the predicate
     benchmark): one row per (workload, size, shard, kernel) with the task's
     fields, the Sign_tally counts, time_s and ns_per_call of the kernel's
-    vectorised call, and error (None when the task ran)."""
-    tasks = orientation_tasks(kernels, sizes, workloads, dimension, seed, shards)
-    return run_tasks(run_orientation_task, tasks, scheduler, n_workers, progress=progress)
+    vectorised call, and error (None when the task ran). A shard's kernels
+    run in one Dask task, which generates the cases and the exact signs once
+    for all of them."""
+    results = run_tasks(run_orientation_shard, _shards(orientation_tasks(kernels, sizes, workloads, dimension, seed,
+                                                                         shards)),
+                        scheduler, n_workers, progress=progress)
+    return [row for shard_rows in results for row in shard_rows]
 
 
 BOOLEAN_COUNTS = ("faces", "unchanged_faces", "moved_vertices", "repair_rounds")

@@ -1,7 +1,10 @@
 // python/src/predicates.cpp — orient2d / orient3d over (n, 2) / (n, 3)
 // arrays, and Kettner's orientation grids (the tool's `orient-grid`).
+#include <pybind11/stl.h>
+
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -83,6 +86,23 @@ py::tuple workload_arrays(const std::vector<Case>& cases) {
   return out;
 }
 
+/// The standard workloads of n cases as {name: arrays}, or the one named
+/// `family` alone (ValueError listing the names when there is none).
+template <std::size_t Dimension, class Makers>
+py::dict workload_dict(const Makers& makers, std::size_t n, std::uint64_t seed,
+                       const std::optional<std::string>& family) {
+  py::dict d;
+  std::string names;
+  for (std::size_t k = 0; k < makers.size(); ++k) {
+    const std::string name = makers[k](0, seed + k).name;  // no cases: just the name
+    names += (k ? ", " : "") + name;
+    if (!family || *family == name) d[py::str(name)] = workload_arrays<Dimension>(makers[k](n, seed + k).cases);
+  }
+  if (family && d.empty())
+    throw py::value_error("orientation_workloads: unknown family '" + *family + "' (valid: " + names + ")");
+  return d;
+}
+
 }  // namespace
 
 void bind_predicates(py::module_& m) {
@@ -104,22 +124,15 @@ void bind_predicates(py::module_& m) {
 
   m.def(
       "orientation_workloads",
-      [](int dimension, std::size_t n, std::uint64_t seed) {
-        py::dict d;
-        if (dimension == 2) {
-          for (const auto& w : analysis::standard_workloads_2(n, seed))
-            d[py::str(w.name)] = workload_arrays<2>(w.cases);
-        } else if (dimension == 3) {
-          for (const auto& w : analysis::standard_workloads_3(n, seed))
-            d[py::str(w.name)] = workload_arrays<3>(w.cases);
-        } else {
-          throw py::value_error("orientation_workloads: dimension must be 2 or 3");
-        }
-        return d;
+      [](int dimension, std::size_t n, std::uint64_t seed, const std::optional<std::string>& family) {
+        if (dimension == 2) return workload_dict<2>(analysis::standard_workload_makers_2, n, seed, family);
+        if (dimension == 3) return workload_dict<3>(analysis::standard_workload_makers_3, n, seed, family);
+        throw py::value_error("orientation_workloads: dimension must be 2 or 3");
       },
-      py::arg("dimension"), py::arg("n"), py::arg("seed"),
+      py::arg("dimension"), py::arg("n"), py::arg("seed"), py::arg("family") = py::none(),
       "relgeo::analysis::standard_workloads_2/3(n, seed): {name: (p, q, r[, s])} of (n, dimension) arrays, the "
-      "families of the tool's experiment and the predicate benchmark.");
+      "families of the tool's experiment and the predicate benchmark; with family, that one alone (the same "
+      "cases).");
   m.def(
       "sign_tally",
       [](const py::array_t<std::int8_t, py::array::forcecast>& answers,

@@ -7,23 +7,36 @@
 #include <bit>
 #include <string>
 #include <tuple>
+#include <type_traits>
 
 #include "kernels/cgal_kernels.h"
 #include "kernels/dispatch.h"
+#include "relgeo/core/certified_sign.h"
 #include "relgeo/core/errors.h"
+#include "relgeo/core/interval.h"
 
 namespace relgeo::python {
 
 namespace {
 
 /// Kernels answer NaN inputs in their own ways (the naive ones with a sign,
-/// the exact one cannot convert them): every coordinate is checked before
-/// any kernel sees one. The check runs on blocks small enough to stay in the
-/// L1 cache for the predicates that follow, without a branch per coordinate:
-/// a test per tuple inside the predicate loop, or a pass of its own over the
-/// whole arrays, each cost more than the double kernel's predicate itself
-/// (5.8 and 5.1 against 2.3 ns per call).
+/// the exact one cannot convert them): every tuple with a NaN or infinite
+/// coordinate is refused, whatever the kernel. The check runs on blocks small
+/// enough to stay in the L1 cache for the predicates that follow, without a
+/// branch per coordinate: a test per tuple inside the predicate loop, or a
+/// pass of its own over the whole arrays, each cost more than the double
+/// kernel's predicate itself (5.8 and 5.1 against 2.3 ns per call).
 constexpr std::size_t block_size = 256;
+
+/// Certified kernels that hold NaN and infinite coordinates (floating-point
+/// and interval coordinates: failsafe, interval, filtered, CGAL Epick) answer
+/// `uncertain` for every tuple with one, never a sign
+/// (test/kernel/bad_input_test.cpp). Under them a block is checked only when
+/// one of its answers is `uncertain`, after the predicates: the same tuple is
+/// refused, and the common block, all certain, costs no check.
+template <class K>
+constexpr bool non_finite_answers_uncertain =
+    K::is_certified && (std::is_floating_point_v<typename K::FT> || std::is_same_v<typename K::FT, Interval>);
 
 /// Finite: the exponent bits are not all ones (integer operations).
 inline bool is_finite(double v) {
@@ -104,10 +117,20 @@ void orientation_loop(const K& k, const char* who, const std::array<Coordinate_r
     else
       return k.construct_point_3_object()(row(i, 0), row(i, 1), row(i, 2));
   };
+  const auto require_finite = [&](std::size_t begin, std::size_t end) {
+    std::apply([&](const auto&... c) { require_finite_tuples<Dimension>(who, begin, end, c...); }, checked);
+  };
   for (std::size_t begin = 0; begin < n; begin += block_size) {
     const std::size_t end = std::min(n, begin + block_size);
-    std::apply([&](const auto&... c) { require_finite_tuples<Dimension>(who, begin, end, c...); }, checked);
-    for (std::size_t i = begin; i < end; ++i) out[i] = static_cast<std::int8_t>(orientation(point(rows, i)...));
+    if constexpr (!non_finite_answers_uncertain<K>) require_finite(begin, end);
+    bool uncertain = false;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Certified_sign s = orientation(point(rows, i)...);
+      uncertain |= s == Certified_sign::uncertain;
+      out[i] = static_cast<std::int8_t>(s);
+    }
+    if constexpr (non_finite_answers_uncertain<K>)
+      if (uncertain) require_finite(begin, end);
   }
 }
 

@@ -145,10 +145,21 @@ def test_failsafe_admits_uncertainty_with_the_documented_value():
 def test_non_finite_coordinates_raise(bad):
     p = np.zeros((5, 2))
     p[3, 1] = bad
-    for kernel in ["double", "filtered", "cgal-sc"]:
+    for kernel in relgeo.kernel_names():
         with pytest.raises(relgeo.NonFiniteInput, match="orient2d: tuple 3 has a NaN or infinite coordinate") as e:
             relgeo.orient2d(p, [1, 0], [0, 1], kernel=kernel)
         assert isinstance(e.value, ValueError) and e.value.code == "non_finite_coordinate"
+    # Under the certified kernels that hold NaN and infinity, a block is checked
+    # only when an answer is uncertain: a bad tuple among certain ones in a
+    # later block, in every kernel, 2D and 3D
+    rng = np.random.default_rng(7)
+    for kernel in relgeo.kernel_names():
+        q = rng.uniform(-1, 1, (700, 3))
+        q[611, 2] = bad
+        with pytest.raises(relgeo.NonFiniteInput, match="orient2d: tuple 611 "):
+            relgeo.orient2d(q[:, 1:], rng.uniform(-1, 1, (700, 2)), rng.uniform(-1, 1, (700, 2)), kernel=kernel)
+        with pytest.raises(relgeo.NonFiniteInput, match="orient3d: tuple 611 "):
+            relgeo.orient3d(*(rng.uniform(-1, 1, (700, 3)) for _ in range(3)), q, kernel=kernel)
     with pytest.raises(relgeo.NonFiniteInput, match="orient3d: tuple 0"):
         relgeo.orient3d([bad, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1])
     # every layout the check reads: a later block, a broadcast point, strided rows

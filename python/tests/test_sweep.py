@@ -112,6 +112,46 @@ def test_a_dying_worker_is_a_row_not_a_failure():
     assert rows[1]["kernel"] == "filtered" and "KilledWorker" in rows[1]["error"]
 
 
+def test_a_shard_generates_its_family_alone_and_shares_the_exact_signs(serial_rows):
+    # one family alone has the cases it has among all four, in 2D and 3D
+    for dimension in (2, 3):
+        every = relgeo._relgeo.orientation_workloads(dimension, 500, 5)
+        for name, arrays in every.items():
+            alone = relgeo._relgeo.orientation_workloads(dimension, 500, 5, name)
+            assert list(alone) == [name]
+            assert all(np.array_equal(a, b) for a, b in zip(alone[name], arrays))
+    with pytest.raises(ValueError, match="unknown family 'uniformly' .valid: uniform, near-collinear"):
+        relgeo._relgeo.orientation_workloads(2, 10, 1, "uniformly")
+    # a shard's rows are those of its kernels run one task each
+    shard = [t for t in sweep.orientation_tasks(KERNELS, sizes=[3000], shards=2) if t["shard"] == 1][:len(KERNELS)]
+    assert deterministic(sweep.run_orientation_shard(shard)) == deterministic(
+        [sweep.run_orientation_task(t) for t in shard])
+    assert deterministic(sweep.run_orientation_shard(shard)) == deterministic(
+        [r for r in serial_rows if r["shard"] == 1][:len(KERNELS)])
+
+
+def die_on_the_second_shard(tasks):
+    if tasks[0]["shard"] == 1:
+        os._exit(3)
+    return sweep.run_orientation_shard(tasks)
+
+
+def test_a_dying_shard_is_a_row_for_each_of_its_kernels():
+    import cloudpickle
+    import dask
+
+    cloudpickle.register_pickle_by_value(sys.modules[__name__])
+
+    groups = sweep._shards(sweep.orientation_tasks(["double", "filtered"], sizes=[400], workloads=["uniform"],
+                                                   shards=2))
+    assert [len(g) for g in groups] == [2, 2]
+    with dask.config.set({"distributed.scheduler.allowed-failures": 0}):
+        results = sweep.run_tasks(die_on_the_second_shard, groups, n_workers=2, progress=False)
+    assert [r["error"] for r in results[0]] == [None, None]
+    assert [r["kernel"] for r in results[1]] == ["double", "filtered"]
+    assert all("KilledWorker" in r["error"] for r in results[1])
+
+
 def test_records(serial_rows):
     table = sweep.as_records(serial_rows)
     assert len(table) == len(serial_rows)

@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <limits>
+#include <random>
 #include <string>
 
 #include "relgeo/kernel.h"
@@ -67,6 +69,43 @@ TYPED_TEST(NonFiniteInput, CertifiedKernelsNeverGiveADefiniteSign) {
         EXPECT_TRUE(is_certain(o2));
         EXPECT_TRUE(is_certain(o3));
       }
+    }
+  }
+}
+
+// The same among coordinates of every magnitude: tuples of random finite
+// coordinates (from 2^-1074 to the largest double, either sign, some equal)
+// with one to three of them NaN or infinite. The Python bindings rely on it:
+// under these kernels they check a block of tuples for NaN and infinity only
+// when an answer is `uncertain` (python/src/predicates_dispatch.cpp).
+TYPED_TEST(NonFiniteInput, CertifiedKernelsAnswerUncertainForAnyNonFiniteTuple) {
+  using K = TypeParam;
+  if constexpr (K::is_certified) {
+    const K k;
+    const auto p2 = k.construct_point_2_object();
+    const auto p3 = k.construct_point_3_object();
+    std::mt19937_64 rng(20261129);
+    const auto finite = [&] {
+      switch (rng() % 5) {
+        case 0: return 0.0;
+        case 1: return 1.0;  // equal coordinates: the exact-degeneracy shortcut
+        case 2: return std::ldexp(static_cast<double>(rng() >> 11), static_cast<int>(rng() % 2098) - 1127);
+        case 3: return std::numeric_limits<double>::max();
+        default: return std::uniform_real_distribution<double>(-1, 1)(rng);
+      }
+    };
+    for (int trial = 0; trial < 4000; ++trial) {
+      double c[12];
+      for (double& v : c) v = (rng() & 1) ? finite() : -finite();
+      const int bad_count = 1 + static_cast<int>(rng() % 3);
+      for (int b = 0; b < bad_count; ++b) c[rng() % 12] = kBad[rng() % 3];
+      // The 2D tuple takes the first six coordinates: give it one bad value too.
+      c[rng() % 6] = kBad[rng() % 3];
+      const Certified_sign o2 = k.orientation_2_object()(p2(c[0], c[1]), p2(c[2], c[3]), p2(c[4], c[5]));
+      const Certified_sign o3 = k.orientation_3_object()(p3(c[0], c[1], c[2]), p3(c[3], c[4], c[5]),
+                                                         p3(c[6], c[7], c[8]), p3(c[9], c[10], c[11]));
+      ASSERT_EQ(o2, Certified_sign::uncertain) << K::name() << " trial " << trial;
+      ASSERT_EQ(o3, Certified_sign::uncertain) << K::name() << " trial " << trial;
     }
   }
 }

@@ -215,17 +215,29 @@ inline Workload<Orientation_3_case> degenerate_3(std::size_t n, std::uint64_t se
   });
 }
 
+/// The generators of the standard workloads, in their order; the k-th
+/// draws its cases from seed + k (so one family alone, as a sweep's task
+/// makes it, has the cases it has among all).
+inline constexpr std::array standard_workload_makers_2{&uniform_2, &near_collinear_2, &extreme_magnitudes_2,
+                                                       &degenerate_2};
+inline constexpr std::array standard_workload_makers_3{&uniform_3, &near_coplanar_3, &extreme_magnitudes_3,
+                                                       &degenerate_3};
+
 /// The standard orientation_2 workloads with n cases each (grids excluded).
 inline std::vector<Workload<Orientation_2_case>> standard_workloads_2(std::size_t n,
                                                                       std::uint64_t seed = 1) {
-  return {uniform_2(n, seed), near_collinear_2(n, seed + 1), extreme_magnitudes_2(n, seed + 2),
-          degenerate_2(n, seed + 3)};
+  std::vector<Workload<Orientation_2_case>> r;
+  for (std::size_t k = 0; k < standard_workload_makers_2.size(); ++k)
+    r.push_back(standard_workload_makers_2[k](n, seed + k));
+  return r;
 }
 /// The standard orientation_3 workloads with n cases each.
 inline std::vector<Workload<Orientation_3_case>> standard_workloads_3(std::size_t n,
                                                                       std::uint64_t seed = 11) {
-  return {uniform_3(n, seed), near_coplanar_3(n, seed + 1), extreme_magnitudes_3(n, seed + 2),
-          degenerate_3(n, seed + 3)};
+  std::vector<Workload<Orientation_3_case>> r;
+  for (std::size_t k = 0; k < standard_workload_makers_3.size(); ++k)
+    r.push_back(standard_workload_makers_3[k](n, seed + k));
+  return r;
 }
 
 }  // namespace relgeo::analysis

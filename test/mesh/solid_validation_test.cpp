@@ -100,6 +100,55 @@ TEST(SolidValidation, VolumeEqualsAnIndependentRationalSum) {
   }
 }
 
+// The integer products of the fast path against GMP, face by face and per
+// component, on soups whose coordinates span the whole fast range (2^-200 to
+// 2^200, every mantissa width, both signs, zeros) with some outside it (the
+// GMP path in the same component), and sums whose limbs carry and borrow.
+TEST(SolidValidation, SignedVolumesEqualRationalSumsOverTheWholeRange) {
+  std::mt19937_64 rng(1129);
+  const auto coordinate = [&]() -> double {
+    const std::uint64_t kind = rng() % 16;
+    if (kind == 0) return 0.0;
+    if (kind == 1) return (rng() & 1 ? 1 : -1) * std::ldexp(1.0, static_cast<int>(rng() % 2) ? 230 : -260);  // GMP path
+    // An integer of 1 to 53 bits scaled into [2^t, 2^(t+1)), t in [-200, 199].
+    const int bits = 1 + static_cast<int>(rng() % 53);
+    const std::uint64_t mantissa = (rng() >> (64 - bits)) | (std::uint64_t{1} << (bits - 1));
+    const int t = static_cast<int>(rng() % 400) - 200;
+    return (rng() & 1 ? 1 : -1) * std::ldexp(static_cast<double>(mantissa), t - (bits - 1));
+  };
+  for (int trial = 0; trial < 40; ++trial) {
+    Mesh_d m;
+    const std::size_t vertices = 3 + rng() % 60, faces = 1 + rng() % 200, components = 1 + rng() % 4;
+    for (std::size_t v = 0; v < vertices; ++v) m.vertices.push_back({coordinate(), coordinate(), coordinate()});
+    std::vector<Index> component;
+    for (std::size_t f = 0; f < faces; ++f) {
+      m.faces.push_back({static_cast<Index>(rng() % vertices), static_cast<Index>(rng() % vertices),
+                         static_cast<Index>(rng() % vertices)});
+      component.push_back(static_cast<Index>(rng() % components));
+    }
+    std::vector<mpq_class> six_v(components);
+    for (std::size_t f = 0; f < faces; ++f) {
+      const auto q = [&](Index v) {
+        return std::array<mpq_class, 3>{exact_rational(m.vertices[v].x), exact_rational(m.vertices[v].y),
+                                        exact_rational(m.vertices[v].z)};
+      };
+      const Triangle& t = m.faces[f];
+      const auto a = q(t[0]), b = q(t[1]), c = q(t[2]);
+      six_v[component[f]] += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                             a[2] * (b[0] * c[1] - b[1] * c[0]);
+    }
+    const internal::Signed_volumes r = internal::signed_volumes(m, component, components, components);
+    ASSERT_TRUE(r.exact);
+    mpq_class total = 0;
+    for (std::size_t c = 0; c < components; ++c) {
+      EXPECT_EQ(r.sign[c], sign_of(sgn(six_v[c]))) << "trial " << trial << " component " << c;
+      EXPECT_EQ(r.value[c], round_rational<double>(mpq_class(six_v[c] / 6))) << "trial " << trial;
+      total += six_v[c];
+    }
+    EXPECT_EQ(r.total, total / 6) << "trial " << trial;
+  }
+}
+
 TEST(SolidValidation, VolumeIsExactFarOutsideTheFastRangeToo) {
   // Coordinates of 2^-300 and 2^250 (outside the error-free splitting range):
   // the GMP path.

@@ -6,13 +6,15 @@
 // orientation determinant against the origin (a fixed point: for a closed
 // mesh any point gives the same value). For double coordinates each
 // determinant is the sum of six signed products of three coordinates; each
-// product is split exactly into four doubles by two error-free products
-// (x y = h + l, h z = h1 + l1, l z = h2 + l2: exact when every nonzero
-// coordinate lies in [2^-200, 2^200], which keeps every partial product far
-// from underflow and overflow), and the doubles are added exactly into a
-// fixed-point accumulator (Exact_sum) whose 32-bit limbs span every double's
-// exponent: no rounding anywhere, about 100 ns per face. Faces with a
-// coordinate outside that range take GMP rationals. Rational coordinates
+// coordinate is m 2^e with an integer m of at most 53 bits, so a product is
+// an integer of at most 159 bits times 2^(e1 + e2 + e3), which integer
+// multiplications give exactly and which is added into a fixed-point
+// accumulator (Exact_sum) whose 32-bit limbs span every double's exponent:
+// no rounding anywhere, about 20 ns per face (splitting each product into
+// four doubles by error-free products and adding those took 100). When
+// every nonzero coordinate lies in [2^-200, 2^200] every product lands in
+// the accumulator's range; faces with a coordinate outside take GMP
+// rationals. Rational coordinates
 // (and MPFR, long double: exact through Number_traits::to_rational) sum in
 // GMP rationals; intervals and other types sum as intervals (an enclosure).
 #pragma once
@@ -30,7 +32,6 @@
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/core/dyadic.h"
 #include "relgeo/core/fp_environment.h"
-#include "relgeo/core/internal/error_free.h"
 #include "relgeo/core/interval.h"
 #include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/point_access.h"
@@ -61,6 +62,27 @@ class Exact_sum {
     const std::size_t k = static_cast<std::size_t>(position >> 5);
     if (p.mantissa > 0) limb_[k] += piece0, limb_[k + 1] += piece1, limb_[k + 2] += piece2;
     else limb_[k] -= piece0, limb_[k + 1] -= piece1, limb_[k + 2] -= piece2;
+    if (++pending_ == (1u << 30)) normalise();
+  }
+  /// Adds (-1)^negative (p2 2^128 + p1 2^64 + p0) 2^exponent. \pre p2 < 2^32,
+  /// 0 <= exponent + 1074 and exponent + 1074 + 192 < 32 (size - 1) (the
+  /// top limb stays headroom).
+  void add(std::uint64_t p0, std::uint64_t p1, std::uint64_t p2, int exponent, bool negative) {
+    const int position = exponent + 1074;
+    const int shift = position & 31;
+    // The 192-bit value shifted left by `shift` (< 32): p2 << shift still fits.
+    const std::uint64_t q0 = p0 << shift;
+    const std::uint64_t q1 = shift == 0 ? p1 : (p1 << shift) | (p0 >> (64 - shift));
+    const std::uint64_t q2 = shift == 0 ? p2 : (p2 << shift) | (p1 >> (64 - shift));
+    const std::array<std::int64_t, 6> piece{
+        static_cast<std::int64_t>(q0 & 0xFFFFFFFFu), static_cast<std::int64_t>(q0 >> 32),
+        static_cast<std::int64_t>(q1 & 0xFFFFFFFFu), static_cast<std::int64_t>(q1 >> 32),
+        static_cast<std::int64_t>(q2 & 0xFFFFFFFFu), static_cast<std::int64_t>(q2 >> 32)};
+    const std::size_t k = static_cast<std::size_t>(position >> 5);
+    if (negative)
+      for (std::size_t j = 0; j < 6; ++j) limb_[k + j] -= piece[j];
+    else
+      for (std::size_t j = 0; j < 6; ++j) limb_[k + j] += piece[j];
     if (++pending_ == (1u << 30)) normalise();
   }
   void add(Exact_sum other) {
@@ -101,21 +123,46 @@ class Exact_sum {
   std::uint32_t pending_ = 0;
 };
 
-/// Whether products of three such coordinates split exactly (file comment).
+/// a b as two 64-bit words.
+struct Wide_product {
+  std::uint64_t low, high;
+};
+inline Wide_product multiply_wide(std::uint64_t a, std::uint64_t b) {
+#if defined(__SIZEOF_INT128__)
+  __extension__ using U128 = unsigned __int128;  // GCC and Clang: one instruction on x86-64
+  const U128 p = static_cast<U128>(a) * b;
+  return {static_cast<std::uint64_t>(p), static_cast<std::uint64_t>(p >> 64)};
+#else
+  const std::uint64_t a0 = a & 0xFFFFFFFFu, a1 = a >> 32, b0 = b & 0xFFFFFFFFu, b1 = b >> 32;
+  const std::uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+  const std::uint64_t middle = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
+  return {(middle << 32) | (p00 & 0xFFFFFFFFu), p11 + (p01 >> 32) + (p10 >> 32) + (middle >> 32)};
+#endif
+}
+
+/// Whether products of three such coordinates land in Exact_sum's range
+/// (file comment).
 inline bool splits_exactly(double v) {
   const double a = std::abs(v);
   return a == 0 || (a >= 0x1p-200 && a <= 0x1p200);
 }
 
-/// det(a, b, c) = a . (b x c), exactly, into s. \pre every coordinate
-/// satisfies splits_exactly.
-inline void add_determinant(Exact_sum& s, const std::array<double, 3>& a, const std::array<double, 3>& b,
-                            const std::array<double, 3>& c) {
-  const auto product = [&s](double x, double y, double z, bool negate) {
-    const Two_terms xy = two_product(x, y);
-    const Two_terms h = two_product(xy.value, z), l = two_product(xy.error, z);
-    const double sign = negate ? -1.0 : 1.0;
-    s.add(sign * h.value), s.add(sign * h.error), s.add(sign * l.value), s.add(sign * l.error);
+/// det(a, b, c) = a . (b x c), exactly, into s: six products of three
+/// coordinates as integers (binary_parts) times powers of two. \pre every
+/// coordinate satisfies splits_exactly (so every product's exponent lies in
+/// [-756, 444] and its bits below 2^606: inside the accumulator).
+inline void add_determinant(Exact_sum& s, const std::array<Binary_parts, 3>& a, const std::array<Binary_parts, 3>& b,
+                            const std::array<Binary_parts, 3>& c) {
+  const auto product = [&s](const Binary_parts& x, const Binary_parts& y, const Binary_parts& z, bool negate) {
+    if (x.mantissa == 0 || y.mantissa == 0 || z.mantissa == 0) return;
+    const auto magnitude = [](std::int64_t m) { return static_cast<std::uint64_t>(m < 0 ? -m : m); };
+    // |x y| < 2^106, then times |z| < 2^53: below 2^159, as three 64-bit words.
+    const Wide_product xy = multiply_wide(magnitude(x.mantissa), magnitude(y.mantissa));
+    const std::uint64_t mz = magnitude(z.mantissa);
+    const Wide_product low = multiply_wide(xy.low, mz), high = multiply_wide(xy.high, mz);
+    const std::uint64_t middle = low.high + high.low;
+    const bool negative = ((x.mantissa < 0) != (y.mantissa < 0)) != ((z.mantissa < 0) != negate);
+    s.add(low.low, middle, high.high + (middle < low.high), x.exponent + y.exponent + z.exponent, negative);
   };
   product(a[0], b[1], c[2], false);
   product(a[0], b[2], c[1], true);
@@ -153,7 +200,7 @@ Signed_volumes signed_volumes(const Triangle_mesh<P>& m, const std::vector<Index
                               std::size_t listed) {
   using A = Point_access<P>;
   using FT = typename A::FT;
-  const Default_fp_environment environment;  // the error-free transformations need round to nearest
+  const Default_fp_environment environment;  // the enclosures (last branch) need round to nearest
   Signed_volumes r;
   r.sign.assign(components, Certified_sign::zero);
   r.value.assign(std::min(components, listed), 0.0);
@@ -163,10 +210,13 @@ Signed_volumes signed_volumes(const Triangle_mesh<P>& m, const std::vector<Index
       const P& p = m.vertices[v];
       return std::array<double, 3>{double(A::x(p)), double(A::y(p)), double(A::z(p))};
     };
+    // Each coordinate decoded once (a vertex is in six faces on average).
     std::vector<char> safe(m.vertices.size());
+    std::vector<std::array<Binary_parts, 3>> parts(m.vertices.size());
     for (Index v = 0; v < m.vertices.size(); ++v) {
       const auto c = coords(v);
       safe[v] = splits_exactly(c[0]) && splits_exactly(c[1]) && splits_exactly(c[2]);
+      if (safe[v]) parts[v] = {binary_parts(c[0]), binary_parts(c[1]), binary_parts(c[2])};
     }
     // One component at a time (faces ordered by component, counting sort):
     // one accumulator in memory however many components there are.
@@ -185,7 +235,7 @@ Signed_volumes signed_volumes(const Triangle_mesh<P>& m, const std::vector<Index
       for (Index k = begin[c]; k < begin[c + 1]; ++k) {
         const Triangle& t = m.faces[order[k]];
         if (safe[t[0]] && safe[t[1]] && safe[t[2]]) {
-          add_determinant(sum, coords(t[0]), coords(t[1]), coords(t[2]));
+          add_determinant(sum, parts[t[0]], parts[t[1]], parts[t[2]]);
           continue;
         }
         std::array<std::array<mpq_class, 3>, 3> q;

@@ -110,11 +110,16 @@ def _shards(tasks):
 
 @contextlib.contextmanager
 def _client(scheduler, n_workers, threads_per_worker):
-    from dask.distributed import Client, LocalCluster  # only when Dask is used
+    import dask  # only when Dask is used
+    from dask.distributed import Client, LocalCluster
 
     if scheduler is None:
-        with LocalCluster(n_workers=n_workers, threads_per_worker=threads_per_worker, processes=True,
-                          dashboard_address=None) as cluster, Client(cluster) as client:
+        # No dashboard, so no use for the workers' statistical profiler, which
+        # samples every thread's stack every 10 ms: with it, the tasks of an
+        # orientation sweep took 15% more CPU time than serially, without it 9%.
+        with dask.config.set({"distributed.worker.profile.enabled": False}), \
+                LocalCluster(n_workers=n_workers, threads_per_worker=threads_per_worker, processes=True,
+                             dashboard_address=None) as cluster, Client(cluster) as client:
             yield client
     else:
         with Client(scheduler) as client:

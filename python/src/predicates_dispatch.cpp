@@ -44,6 +44,19 @@ inline bool is_finite(double v) {
   return (std::bit_cast<std::uint64_t>(v) & exponent) != exponent;
 }
 
+constexpr std::uint64_t sign_bit = 0x8000000000000000;
+
+/// The sign bit is set when a coordinate of tuple i is NaN or infinite: one
+/// more than an all-ones exponent carries into it (all_finite below).
+template <int Dimension, class... Rows>
+std::uint64_t special_bits(std::size_t i, const Rows&... rows) {
+  constexpr std::uint64_t exponent = 0x7ff0000000000000, exponent_one = 0x0010000000000000;
+  std::uint64_t special = 0;
+  for (int j = 0; j < Dimension; ++j)
+    special = (special | ... | ((std::bit_cast<std::uint64_t>(rows(i, j)) & exponent) + exponent_one));
+  return special;
+}
+
 template <int Dimension, class... Rows>
 bool finite_tuple(std::size_t i, const Rows&... rows) {
   bool finite = true;
@@ -122,15 +135,29 @@ void orientation_loop(const K& k, const char* who, const std::array<Coordinate_r
   };
   for (std::size_t begin = 0; begin < n; begin += block_size) {
     const std::size_t end = std::min(n, begin + block_size);
-    if constexpr (!non_finite_answers_uncertain<K>) require_finite(begin, end);
-    bool uncertain = false;
-    for (std::size_t i = begin; i < end; ++i) {
-      const Certified_sign s = orientation(point(rows, i)...);
-      uncertain |= s == Certified_sign::uncertain;
-      out[i] = static_cast<std::int8_t>(s);
-    }
-    if constexpr (non_finite_answers_uncertain<K>)
+    if constexpr (non_finite_answers_uncertain<K>) {
+      bool uncertain = false;
+      for (std::size_t i = begin; i < end; ++i) {
+        const Certified_sign s = orientation(point(rows, i)...);
+        uncertain |= s == Certified_sign::uncertain;
+        out[i] = static_cast<std::int8_t>(s);
+      }
       if (uncertain) require_finite(begin, end);
+    } else if constexpr (std::is_floating_point_v<typename K::FT>) {
+      // The naive kernels answer anything on NaN, harmlessly: the tuples'
+      // exponent bits are collected as they are read, and a block with a
+      // non-finite coordinate is refused before its answers are returned.
+      std::uint64_t special = 0;
+      for (std::size_t i = begin; i < end; ++i) {
+        special |= special_bits<Dimension>(i, rows...);
+        out[i] = static_cast<std::int8_t>(orientation(point(rows, i)...));
+      }
+      if (special & sign_bit) require_finite(begin, end);
+    } else {
+      // The others may refuse a NaN themselves, with their own message: checked first.
+      require_finite(begin, end);
+      for (std::size_t i = begin; i < end; ++i) out[i] = static_cast<std::int8_t>(orientation(point(rows, i)...));
+    }
   }
 }
 

@@ -16,7 +16,11 @@
 //    relgeo::check_solid (every check of check_mesh, then the test with the
 //    embedded-star certificate for neighbouring faces);
 //  * validate_solid/<mesh>/relgeo filtered: the whole validation report
-//    (no peer; for scale).
+//    (no peer; for scale);
+//  * volume/<mesh>/<subject>: the signed volume, relgeo's exact sum (the
+//    validation's, internal/exact_volume.h) against
+//    CGAL::Polygon_mesh_processing::volume over Epick (a double sum, not
+//    exact) and over Epeck made exact (CGAL::exact; not on the 10^6-face case).
 // Each subject is measured 5 times (3 on the 10^6-face case); the table at the
 // end gives the minimum of the repetitions and its ratio to the CGAL peer
 // (box_intersection_d, box_self_intersection_d, PMP self_intersections, each
@@ -28,10 +32,12 @@
 #include <fstream>
 #include <map>
 #include <stdexcept>
+#include <vector>
 
 #include "common/command_line.h"
 #include "mesh/solid_fixtures.h"
 #include "relgeo/mesh/face_bvh.h"
+#include "relgeo/mesh/internal/exact_volume.h"
 #include "relgeo/mesh/mesh_io.h"
 #include "relgeo/mesh/self_intersection.h"
 #include "relgeo/mesh/solid_validation.h"
@@ -151,6 +157,15 @@ void relgeo_validate(benchmark::State& state, const std::string& case_name) {
   state.counters["pairs"] = static_cast<double>(pairs);
 }
 
+void relgeo_volume(benchmark::State& state, const std::string& case_name) {
+  const Mesh& m = mesh_pair_case(case_name).a;
+  const std::vector<relgeo::Index> one_component(m.faces.size(), 0);
+  for (auto _ : state) {
+    const relgeo::internal::Signed_volumes v = relgeo::internal::signed_volumes(m, one_component, 1, 1);
+    benchmark::DoNotOptimize(v.value[0]);
+  }
+}
+
 // The table: per group, the minimum time and its ratio to the CGAL peer.
 class Ratio_reporter : public Collecting_reporter {
  public:
@@ -208,6 +223,8 @@ void register_subjects() {
     register_subject("self_intersections/" + c + "/relgeo filtered 2 threads", relgeo_self_intersections<2>, c);
     register_cgal_subjects("self_intersections", c, 2);
     register_subject("validate_solid/" + c + "/relgeo filtered", relgeo_validate, c);
+    register_subject("volume/" + c + "/relgeo exact", relgeo_volume, c);
+    register_cgal_subjects("volume", c, 1);
   }
 }
 

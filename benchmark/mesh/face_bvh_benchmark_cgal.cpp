@@ -1,13 +1,15 @@
 // The CGAL subjects of relgeo_mesh_benchmark: box_intersection_d and
 // box_self_intersection_d on face boxes (as CGAL's corefinement and
 // self_intersections build them), AABB_tree over the faces of A with one box
-// query per face of B, and Polygon_mesh_processing::self_intersections over
-// Epick. With TBB (CGAL_LINKED_WITH_TBB) the sweeps also run with
+// query per face of B, Polygon_mesh_processing::self_intersections over
+// Epick, and Polygon_mesh_processing::volume over Epick and Epeck. With TBB (CGAL_LINKED_WITH_TBB) the sweeps also run with
 // Parallel_tag in an arena of 2 threads.
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/box_intersection_d.h>
@@ -20,6 +22,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -202,6 +205,18 @@ void cgal_self_intersections(benchmark::State& state, const std::string& case_na
   state.counters["pairs"] = static_cast<double>(pairs);
 }
 
+// The signed volume of mesh A; under Epeck made exact (CGAL::exact), so
+// that both sides compute the exact value.
+template <class Kernel>
+void cgal_volume(benchmark::State& state, const std::string& case_name) {
+  const auto sm = relgeo::to_surface_mesh<typename Kernel::Point_3>(mesh_pair_case(case_name).a);
+  for (auto _ : state) {
+    auto v = CGAL::Polygon_mesh_processing::volume(sm);
+    if constexpr (std::is_same_v<Kernel, CGAL::Epeck>) CGAL::exact(v);
+    benchmark::DoNotOptimize(v);
+  }
+}
+
 }  // namespace
 
 void register_cgal_subjects(const std::string& kind, const std::string& c, int threads) {
@@ -212,6 +227,9 @@ void register_cgal_subjects(const std::string& kind, const std::string& c, int t
       register_subject(g + "CGAL AABB_tree", cgal_aabb_pairs, c);
     } else if (kind == "self_pairs") {
       register_subject(g + "CGAL box_self_intersection_d", cgal_box_self_pairs<CGAL::Sequential_tag>, c);
+    } else if (kind == "volume") {
+      register_subject(g + "CGAL PMP Epick", cgal_volume<K>, c);
+      if (c != "spheres-1m") register_subject(g + "CGAL PMP Epeck, exact", cgal_volume<CGAL::Epeck>, c);
     } else {
       register_subject(g + "CGAL PMP Epick", cgal_self_intersections<CGAL::Sequential_tag>, c);
     }

@@ -9,8 +9,10 @@ that knows it cannot decide (failsafe, interval). Bad input raises a
 ``relgeo.Error`` subclass (``relgeo.errors``) carrying relgeo's message.
 """
 
+import collections.abc
 import json
 import os
+import tempfile
 
 import numpy as np
 
@@ -348,7 +350,10 @@ def join(surface, meshes, method="whitney", kernel=DEFAULT_KERNEL, curves=(), ou
     4, ``relgeo join``).
 
     surface: the model's file (a JSON relgeo-surface-model, doc/joining.md;
-    STEP/IGES when relgeo has OpenCASCADE). meshes: one patch per face, in
+    STEP/IGES when relgeo has OpenCASCADE), or that JSON document as a dict
+    (written to a temporary file "surface-model-dict.json", the name the
+    errors give; Python's floats are written so that they read back bit for
+    bit). meshes: one patch per face, in
     face order, each a mesh file or a pair (V, F) of arrays. method
     "whitney" (default), "naive" or "occt"; kernel of the certified checks:
     "failsafe", "interval", "filtered" (default), "exact". curves: edge-curve
@@ -376,6 +381,15 @@ def join(surface, meshes, method="whitney", kernel=DEFAULT_KERNEL, curves=(), ou
             V, F = mesh
             names.append(f"<arrays {i}>")
             arrays.append((np.asarray(V, dtype=np.float64), np.asarray(F, dtype=np.int64)))
-    return _relgeo.join(os.fspath(surface), names, arrays, [os.fspath(c) for c in curves],
-                        os.fspath(output) if output is not None else "", method, kernel, max_absolute_error,
-                        max_normal_error, edge_curves, layers, min_angle, slope_margin, extrapolation)
+    def run(surface_path):
+        return _relgeo.join(surface_path, names, arrays, [os.fspath(c) for c in curves],
+                            os.fspath(output) if output is not None else "", method, kernel, max_absolute_error,
+                            max_normal_error, edge_curves, layers, min_angle, slope_margin, extrapolation)
+
+    if isinstance(surface, collections.abc.Mapping):
+        with tempfile.TemporaryDirectory(prefix="relgeo-join-") as folder:
+            path = os.path.join(folder, "surface-model-dict.json")
+            with open(path, "w") as f:
+                json.dump(surface, f)
+            return run(path)
+    return run(os.fspath(surface))

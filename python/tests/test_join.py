@@ -52,6 +52,25 @@ def test_join_matches_the_tool(tool, tmp_path, case, method, kernel, options, py
         assert set(got["face_of_triangle"]) == {0, 1}
 
 
+def test_join_takes_the_surface_model_as_a_dict():
+    import json
+
+    for surface, meshes in (FOLDING, TWO_FACES):
+        document = json.loads(surface.read_text())
+        from_dict = relgeo.join(document, meshes)
+        from_file = relgeo.join(surface, meshes)
+        record = {k: v for k, v in from_dict.items() if k not in ("V", "F", "face_of_triangle", "surface")}
+        assert untimed(record) == untimed({k: v for k, v in from_file.items()
+                                           if k not in ("V", "F", "face_of_triangle", "surface")})
+        for k in ("V", "F", "face_of_triangle"):
+            np.testing.assert_array_equal(from_dict[k], from_file[k])
+    # a bad document names the dict's file
+    bad = json.loads(FOLDING[0].read_text())
+    del bad["faces"]
+    with pytest.raises(relgeo.UnreadableFile, match="surface-model-dict.json"):
+        relgeo.join(bad, FOLDING[1])
+
+
 def test_join_verdicts_and_output(tmp_path):
     whitney = relgeo.join(*FOLDING, output=tmp_path / "w.off")
     assert whitney["status"] == "ok" and whitney["summary"]["flipped_after"] == 0

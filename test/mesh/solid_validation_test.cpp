@@ -9,6 +9,7 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <set>
@@ -146,6 +147,25 @@ TEST(SolidValidation, SignedVolumesEqualRationalSumsOverTheWholeRange) {
       total += six_v[c];
     }
     EXPECT_EQ(r.total, total / 6) << "trial " << trial;
+  }
+}
+
+TEST(SolidValidation, PortableWideProductsEqualTheCompilers) {
+  std::mt19937_64 rng(64);
+  for (int i = 0; i < 200000; ++i) {
+    // every width, and the extremes (all ones: every carry)
+    std::uint64_t a = rng() >> (rng() % 64), b = rng() >> (rng() % 64);
+    if (i % 7 == 0) a = ~std::uint64_t{0};
+    if (i % 11 == 0) b = ~std::uint64_t{0};
+    const internal::Wide_product p = internal::multiply_wide_portable(a, b), q = internal::multiply_wide(a, b);
+    ASSERT_EQ(p.low, q.low) << a << " * " << b;
+    ASSERT_EQ(p.high, q.high) << a << " * " << b;
+#if defined(__SIZEOF_INT128__)
+    __extension__ using U128 = unsigned __int128;
+    const U128 exact = static_cast<U128>(a) * b;
+    ASSERT_EQ(p.low, static_cast<std::uint64_t>(exact));
+    ASSERT_EQ(p.high, static_cast<std::uint64_t>(exact >> 64));
+#endif
   }
 }
 

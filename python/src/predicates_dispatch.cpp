@@ -38,43 +38,37 @@ template <class K>
 constexpr bool non_finite_answers_uncertain =
     K::is_certified && (std::is_floating_point_v<typename K::FT> || std::is_same_v<typename K::FT, Interval>);
 
-/// Finite: the exponent bits are not all ones (integer operations).
-inline bool is_finite(double v) {
-  constexpr std::uint64_t exponent = 0x7ff0000000000000;
-  return (std::bit_cast<std::uint64_t>(v) & exponent) != exponent;
+/// The rule of every check below, in integer operations (branch-free; no
+/// floating-point operation, so no exception flag or trap on a signalling
+/// NaN): one more than an all-ones exponent carries into the sign bit, so
+/// the sign bit of `special(v)` is set exactly when v is NaN or infinite;
+/// or-ed over many values, it tells whether any is.
+constexpr std::uint64_t sign_bit = 0x8000000000000000;
+inline std::uint64_t special(double v) {
+  constexpr std::uint64_t exponent = 0x7ff0000000000000, exponent_one = 0x0010000000000000;
+  return (std::bit_cast<std::uint64_t>(v) & exponent) + exponent_one;
 }
 
-constexpr std::uint64_t sign_bit = 0x8000000000000000;
-
-/// The sign bit is set when a coordinate of tuple i is NaN or infinite: one
-/// more than an all-ones exponent carries into it (all_finite below).
+/// special() or-ed over the coordinates of tuple i.
 template <int Dimension, class... Rows>
 std::uint64_t special_bits(std::size_t i, const Rows&... rows) {
-  constexpr std::uint64_t exponent = 0x7ff0000000000000, exponent_one = 0x0010000000000000;
-  std::uint64_t special = 0;
-  for (int j = 0; j < Dimension; ++j)
-    special = (special | ... | ((std::bit_cast<std::uint64_t>(rows(i, j)) & exponent) + exponent_one));
-  return special;
+  std::uint64_t bits = 0;
+  for (int j = 0; j < Dimension; ++j) bits = (bits | ... | special(rows(i, j)));
+  return bits;
 }
 
 template <int Dimension, class... Rows>
 bool finite_tuple(std::size_t i, const Rows&... rows) {
-  bool finite = true;
-  for (int j = 0; j < Dimension; ++j) finite = (finite & ... & is_finite(rows(i, j)));
-  return finite;
+  return (special_bits<Dimension>(i, rows...) & sign_bit) == 0;
 }
 
-/// Whether count doubles from v are all finite: one branch-free pass of
-/// 64-bit integer additions (x86-64's baseline SSE2 has no 64-bit compare,
-/// but adds, ands and ors of 64-bit lanes vectorise): one more than an
-/// all-ones exponent carries into the sign bit. No floating-point
-/// operation, so no exception flag or trap on a signalling NaN.
+/// Whether count doubles from v are all finite: one pass that vectorises
+/// (x86-64's baseline SSE2 has no 64-bit compare, but adds, ands and ors of
+/// 64-bit lanes).
 bool all_finite(const double* v, std::size_t count) {
-  constexpr std::uint64_t exponent = 0x7ff0000000000000, exponent_one = 0x0010000000000000,
-                          sign = 0x8000000000000000;
-  std::uint64_t special = 0;
-  for (std::size_t k = 0; k < count; ++k) special |= (std::bit_cast<std::uint64_t>(v[k]) & exponent) + exponent_one;
-  return (special & sign) == 0;
+  std::uint64_t bits = 0;
+  for (std::size_t k = 0; k < count; ++k) bits |= special(v[k]);
+  return (bits & sign_bit) == 0;
 }
 
 /// Whether rows [begin, end) of `rows` are finite.

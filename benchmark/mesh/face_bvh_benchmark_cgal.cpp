@@ -2,8 +2,9 @@
 // box_self_intersection_d on face boxes (as CGAL's corefinement and
 // self_intersections build them), AABB_tree over the faces of A with one box
 // query per face of B, Polygon_mesh_processing::self_intersections over
-// Epick, and Polygon_mesh_processing::volume over Epick and Epeck. With TBB (CGAL_LINKED_WITH_TBB) the sweeps also run with
-// Parallel_tag in an arena of 2 threads.
+// Epick, and Polygon_mesh_processing::volume over Epick and Epeck. With TBB
+// (CGAL_LINKED_WITH_TBB) the sweeps also run with Parallel_tag in an arena of
+// 2 threads.
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>

@@ -40,31 +40,13 @@
 
 namespace relgeo::internal {
 
-/// The exact sum of finite doubles: 68 signed 64-bit limbs, limb k holding
-/// a multiple of 2^(32 k - 1074) (every finite double is m 2^e with
-/// e >= -1074 and |m| < 2^53, so it lands on three limbs as pieces below
-/// 2^32). Carries are propagated every 2^30 additions, before any limb can
-/// overflow.
+/// An exact fixed-point sum: 68 signed 64-bit limbs, limb k holding a
+/// multiple of 2^(32 k - 1074), so every finite double and every product of
+/// three coordinates in the fast range fits (add_determinant). A term lands on
+/// consecutive limbs as pieces below 2^32. Carries are propagated every 2^30
+/// additions, before any limb can overflow.
 class Exact_sum {
  public:
-  /// \pre v is finite.
-  void add(double v) {
-    const Binary_parts p = binary_parts(v);
-    if (p.mantissa == 0) return;
-    const int position = p.exponent + 1074;  // >= 0
-    const auto magnitude = static_cast<std::uint64_t>(p.mantissa < 0 ? -p.mantissa : p.mantissa);
-    const int shift = position & 31;
-    // magnitude << shift (< 2^85) as three 32-bit pieces, without overflow.
-    const std::uint64_t low = (magnitude & 0xFFFFFFFFu) << shift;  // < 2^63
-    const std::uint64_t middle = (low >> 32) + ((magnitude >> 32) << shift);  // < 2^53
-    const auto piece0 = static_cast<std::int64_t>(low & 0xFFFFFFFFu);
-    const auto piece1 = static_cast<std::int64_t>(middle & 0xFFFFFFFFu);
-    const auto piece2 = static_cast<std::int64_t>(middle >> 32);
-    const std::size_t k = static_cast<std::size_t>(position >> 5);
-    if (p.mantissa > 0) limb_[k] += piece0, limb_[k + 1] += piece1, limb_[k + 2] += piece2;
-    else limb_[k] -= piece0, limb_[k + 1] -= piece1, limb_[k + 2] -= piece2;
-    if (++pending_ == (1u << 30)) normalise();
-  }
   /// Adds (-1)^negative (p2 2^128 + p1 2^64 + p0) 2^exponent. \pre p2 < 2^32,
   /// 0 <= exponent + 1074 and exponent + 1074 + 192 < 32 (size - 1) (the
   /// top limb stays headroom).

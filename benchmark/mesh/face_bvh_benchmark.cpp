@@ -20,7 +20,12 @@
 //  * volume/<mesh>/<subject>: the signed volume, relgeo's exact sum (the
 //    validation's, internal/exact_volume.h) against
 //    CGAL::Polygon_mesh_processing::volume over Epick (a double sum, not
-//    exact) and over Epeck made exact (CGAL::exact; not on the 10^6-face case).
+//    exact) and over Epeck made exact (CGAL::exact; not on the 10^6-face case);
+//  * read_off/<mesh>/<subject>, write_off/<mesh>/<subject>: mesh A as an
+//    ASCII OFF file (both read the file relgeo's writer made; both write
+//    doubles that read back exactly: CGAL with 17 digits), relgeo::read_mesh
+//    / write_mesh against CGAL::IO's read_polygon_soup / write_polygon_soup
+//    (not on the 10^6-face case).
 // Each subject is measured 5 times (3 on the 10^6-face case); the table at the
 // end gives the minimum of the repetitions and its ratio to the CGAL peer
 // (box_intersection_d, box_self_intersection_d, PMP self_intersections, each
@@ -29,6 +34,7 @@
 #include "face_bvh_benchmark.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <stdexcept>
@@ -49,6 +55,16 @@ std::vector<std::string> case_names() {
   if (std::ifstream(std::string(RELGEO_CGAL_MESH_DIR) + "/elephant.off").good()) names.push_back("elephant");
   names.push_back("spheres-1m");
   return names;
+}
+
+std::string off_file(const std::string& case_name) {
+  static std::map<std::string, std::string> written;
+  if (const auto it = written.find(case_name); it != written.end()) return it->second;
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "relgeo_mesh_benchmark";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / (case_name + ".off")).string();
+  relgeo::write_mesh(path, mesh_pair_case(case_name).a);
+  return written[case_name] = path;
 }
 
 const Mesh_pair_case& mesh_pair_case(const std::string& name) {
@@ -166,6 +182,20 @@ void relgeo_volume(benchmark::State& state, const std::string& case_name) {
   }
 }
 
+void relgeo_read_off(benchmark::State& state, const std::string& case_name) {
+  const std::string path = off_file(case_name);
+  for (auto _ : state) {
+    const Mesh m = relgeo::read_mesh(path);
+    benchmark::DoNotOptimize(m.faces.data());
+  }
+}
+
+void relgeo_write_off(benchmark::State& state, const std::string& case_name) {
+  const Mesh& m = mesh_pair_case(case_name).a;
+  const std::string path = off_file(case_name) + ".out.off";
+  for (auto _ : state) relgeo::write_mesh(path, m);
+}
+
 // The table: per group, the minimum time and its ratio to the CGAL peer.
 class Ratio_reporter : public Collecting_reporter {
  public:
@@ -176,9 +206,10 @@ class Ratio_reporter : public Collecting_reporter {
     for (const auto& [name, best] : best_) {
       const std::string group = name.substr(0, name.rfind('/'));
       const std::string kind = group.substr(0, group.find('/'));
-      const std::string peer = kind == "pairs"        ? "CGAL box_intersection_d"
-                               : kind == "self_pairs" ? "CGAL box_self_intersection_d"
-                                                      : "CGAL PMP Epick";
+      const std::string peer = kind == "pairs"                               ? "CGAL box_intersection_d"
+                               : kind == "self_pairs"                        ? "CGAL box_self_intersection_d"
+                               : kind == "read_off" || kind == "write_off" ? "CGAL IO"
+                                                                             : "CGAL PMP Epick";
       const auto it = best_.find(group + "/" + peer);
       const std::string ratio = it == best_.end() ? "-" : std::to_string(best.ms / it->second.ms).substr(0, 5);
       std::printf("%-58s %10.3f %10.3f %10s %10.0f\n", name.c_str(), best.ms, best.cpu_ms, ratio.c_str(), best.pairs);
@@ -225,6 +256,11 @@ void register_subjects() {
     register_subject("validate_solid/" + c + "/relgeo filtered", relgeo_validate, c);
     register_subject("volume/" + c + "/relgeo exact", relgeo_volume, c);
     register_cgal_subjects("volume", c, 1);
+    if (c == "spheres-1m") continue;
+    register_subject("read_off/" + c + "/relgeo read_mesh", relgeo_read_off, c);
+    register_cgal_subjects("read_off", c, 1);
+    register_subject("write_off/" + c + "/relgeo write_mesh", relgeo_write_off, c);
+    register_cgal_subjects("write_off", c, 1);
   }
 }
 

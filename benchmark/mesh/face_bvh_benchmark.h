@@ -29,6 +29,9 @@ struct Mesh_pair_case {
 /// CGAL data set is missing (elephant).
 std::vector<std::string> case_names();
 const Mesh_pair_case& mesh_pair_case(const std::string& name);
+/// Mesh A of a case as an OFF file of the system's temporary folder
+/// (written by relgeo::write_mesh on first use): the read_off subjects' input.
+std::string off_file(const std::string& case_name);
 
 /// Registers name with the repetitions every subject of this suite uses
 /// (fewer on the 10^6-face case).
@@ -37,7 +40,7 @@ benchmark::internal::Benchmark* register_subject(const std::string& name,
                                                  const std::string& case_name);
 
 /// The CGAL subjects of one kind ("pairs", "self_pairs",
-/// "self_intersections") and case, on one or two threads (two only with TBB)
+/// "self_intersections", "volume", "read_off", "write_off") and case, on one or two threads (two only with TBB)
 /// (face_bvh_benchmark_cgal.cpp).
 void register_cgal_subjects(const std::string& kind, const std::string& case_name, int threads);
 

@@ -8,6 +8,7 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -218,6 +219,29 @@ void cgal_volume(benchmark::State& state, const std::string& case_name) {
   }
 }
 
+// CGAL's polygon-soup IO on the same OFF file.
+void cgal_read_off(benchmark::State& state, const std::string& case_name) {
+  const std::string path = off_file(case_name);
+  for (auto _ : state) {
+    std::vector<K::Point_3> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    if (!CGAL::IO::read_polygon_soup(path, points, polygons)) state.SkipWithError("CGAL could not read the file");
+    benchmark::DoNotOptimize(polygons.data());
+  }
+}
+
+void cgal_write_off(benchmark::State& state, const std::string& case_name) {
+  const Mesh& m = mesh_pair_case(case_name).a;
+  std::vector<K::Point_3> points;
+  for (const auto& p : m.vertices) points.emplace_back(p.x, p.y, p.z);
+  std::vector<std::vector<std::size_t>> polygons;
+  for (const auto& t : m.faces) polygons.push_back({t[0], t[1], t[2]});
+  const std::string path = off_file(case_name) + ".cgal.off";
+  for (auto _ : state)
+    if (!CGAL::IO::write_polygon_soup(path, points, polygons, CGAL::parameters::stream_precision(17)))
+      state.SkipWithError("CGAL could not write the file");
+}
+
 }  // namespace
 
 void register_cgal_subjects(const std::string& kind, const std::string& c, int threads) {
@@ -228,6 +252,10 @@ void register_cgal_subjects(const std::string& kind, const std::string& c, int t
       register_subject(g + "CGAL AABB_tree", cgal_aabb_pairs, c);
     } else if (kind == "self_pairs") {
       register_subject(g + "CGAL box_self_intersection_d", cgal_box_self_pairs<CGAL::Sequential_tag>, c);
+    } else if (kind == "read_off") {
+      register_subject(g + "CGAL IO", cgal_read_off, c);
+    } else if (kind == "write_off") {
+      register_subject(g + "CGAL IO", cgal_write_off, c);
     } else if (kind == "volume") {
       register_subject(g + "CGAL PMP Epick", cgal_volume<K>, c);
       if (c != "spheres-1m") register_subject(g + "CGAL PMP Epeck, exact", cgal_volume<CGAL::Epeck>, c);

@@ -1,12 +1,17 @@
-// Files (OFF, OBJ, PLY, STL through CGAL's IO), tag side files, Surface_mesh
+// Files (OFF by relgeo's reader and writer; OBJ, PLY, STL through CGAL's IO), tag side files, Surface_mesh
 // conversion, CGAL's data meshes, and unreadable / bad files.
 #include <gtest/gtest.h>
 
 #include <CGAL/Simple_cartesian.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <random>
 #include <string>
 
 #include "mesh/mesh_fixtures.h"
@@ -48,6 +53,52 @@ TEST_P(RoundTrip, DoublesSurviveExactlyAndConnectivityIsKept) {
   }
 }
 INSTANTIATE_TEST_SUITE_P(Formats, RoundTrip, ::testing::Values("off", "obj", "ply", "stl"));
+
+// relgeo's OFF writer (shortest round-trip decimals) over the whole range of
+// doubles: random bit patterns (subnormals, the largest exponents, negative
+// zero), every one read back to the same bits.
+TEST(MeshIo, OffWritesEveryFiniteDoubleSoThatItReadsBackExactly) {
+  std::mt19937_64 rng(20261129);
+  Mesh_d m;
+  while (m.vertices.size() < 30000) {
+    double c[3];
+    for (double& x : c) {
+      const std::uint64_t bits = rng();
+      std::memcpy(&x, &bits, sizeof x);
+      if (!std::isfinite(x)) x = -0.0;
+    }
+    m.vertices.push_back({c[0], c[1], c[2]});
+  }
+  m.vertices.push_back({std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::max(),
+                        -std::numeric_limits<double>::min()});
+  for (Index v = 0; v + 2 < m.vertices.size(); v += 3) m.faces.push_back({v, v + 1, v + 2});
+  const std::string path = temp_path("random_bits.off");
+  write_mesh(path, m);
+  const Mesh_d r = read_mesh(path);
+  ASSERT_EQ(r.vertices.size(), m.vertices.size());
+  EXPECT_EQ(r.faces, m.faces);
+  std::size_t different = 0;
+  for (std::size_t v = 0; v < m.vertices.size(); ++v)
+    for (int i = 0; i < 3; ++i) {
+      const double a = i == 0 ? m.vertices[v].x : i == 1 ? m.vertices[v].y : m.vertices[v].z;
+      const double b = i == 0 ? r.vertices[v].x : i == 1 ? r.vertices[v].y : r.vertices[v].z;
+      different += std::memcmp(&a, &b, sizeof a) != 0;
+    }
+  EXPECT_EQ(different, 0u);
+}
+
+// Write_options::precision below 17 rounds to that many significant digits.
+TEST(MeshIo, OffPrecisionRoundsToItsDigits) {
+  Mesh_d m = tetrahedron();
+  m.vertices[0] = {1.0 / 3.0, -2.0 / 3.0, 12345.678901};
+  const std::string path = temp_path("precision.off");
+  write_mesh(path, m, {.precision = 6});
+  const Mesh_d r = read_mesh(path);
+  EXPECT_EQ(r.vertices[0].x, 0.333333);
+  EXPECT_EQ(r.vertices[0].y, -0.666667);
+  EXPECT_EQ(r.vertices[0].z, 12345.7);
+  EXPECT_EQ(r.faces, m.faces);
+}
 
 TEST(MeshIo, BinaryPlyIsExact) {
   const Mesh_d m = jitter(torus(6, 5), 1e-2);

@@ -30,8 +30,10 @@
 #include <vector>
 
 #include "relgeo/core/errors.h"
+#include "relgeo/io/text_file.h"
 #include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/internal/off_reader.h"
+#include "relgeo/mesh/internal/off_writer.h"
 #include "relgeo/mesh/internal/ply_check.h"
 #include "relgeo/mesh/polygon_soup.h"
 #include "relgeo/mesh/triangle_mesh.h"
@@ -76,7 +78,8 @@ struct Read_options {
 
 /// Options of write_mesh.
 struct Write_options {
-  /// Significant digits of ASCII coordinates (17: doubles round-trip exactly).
+  /// Significant digits of ASCII coordinates (17: doubles round-trip
+  /// exactly; OFF then writes each as the shortest such decimal).
   int precision = 17;
   /// Binary PLY/STL (ignored for OFF and OBJ).
   bool binary = false;
@@ -144,23 +147,31 @@ inline void write_feature_tags(const std::string& path, const Feature_tags& tags
 /// triangulated) or bad indices. The mesh itself is not checked (check_mesh).
 inline Triangle_mesh<Point_3<double>> read_mesh(const std::string& path, const Read_options& options = {}) {
   using CP = CGAL::Simple_cartesian<double>::Point_3;
-  std::vector<CP> pts;
-  std::vector<std::vector<std::size_t>> polys;
   std::string text;
   {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Unreadable_file("cannot open mesh file '" + path + "'");
-    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    text = io::read_text_stream(in, "mesh file '" + path + "'");
   }
   if (text.find_first_not_of(" \t\r\n\v\f") == std::string::npos)
     throw Unreadable_file("mesh file '" + path + "' is empty");
   const std::string extension = internal::lower_case_extension(path);
-  std::vector<Point_3<double>> points;
+  const Soup_options soup_options{.triangulate_polygons = options.triangulate_polygons};
+  // Before the faces' indices are checked (a file with both defects names its coordinates).
+  const auto require_finite = [&](const std::vector<Point_3<double>>& points) {
+    for (std::size_t v = 0; v < points.size(); ++v)
+      if (!std::isfinite(points[v].x) || !std::isfinite(points[v].y) || !std::isfinite(points[v].z))
+        throw Non_finite_input("mesh file '" + path + "': vertex " + std::to_string(v) +
+                               " has a NaN or infinite coordinate");
+  };
+  Triangle_mesh<Point_3<double>> m;
   if (extension == "off") {
     internal::Off_soup soup = internal::read_off_soup(text, path);
-    points = std::move(soup.points);
-    polys = std::move(soup.polygons);
+    require_finite(soup.points);  // the reader's are finite; x / w of 4OFF may not be
+    m = from_polygon_soup(std::move(soup.points), soup.polygons(), soup_options);
   } else {
+    std::vector<CP> pts;
+    std::vector<std::vector<std::size_t>> polys;
     if (extension == "ply") internal::check_ply_structure(text, path);
     if (extension == "stl") internal::check_binary_stl_size(text, path);
     bool ok = false;
@@ -170,27 +181,39 @@ inline Triangle_mesh<Point_3<double>> read_mesh(const std::string& path, const R
       throw Unreadable_file("cannot parse mesh file '" + path + "': " + e.what());
     }
     if (!ok) throw Unreadable_file("cannot parse mesh file '" + path + "' (OFF, OBJ, PLY or STL expected)");
+    std::vector<Point_3<double>> points;
     points.reserve(pts.size());
     for (const CP& p : pts) points.push_back({p.x(), p.y(), p.z()});
+    require_finite(points);
+    m = from_polygon_soup(std::move(points), polys, soup_options);
   }
-  for (std::size_t v = 0; v < points.size(); ++v)
-    if (!std::isfinite(points[v].x) || !std::isfinite(points[v].y) || !std::isfinite(points[v].z))
-      throw Non_finite_input("mesh file '" + path + "': vertex " + std::to_string(v) +
-                             " has a NaN or infinite coordinate");
-  Triangle_mesh<Point_3<double>> m =
-      from_polygon_soup(std::move(points), polys, Soup_options{.triangulate_polygons = options.triangulate_polygons});
   if (!options.tags_path.empty()) m.tags = read_feature_tags(options.tags_path);
   return m;
 }
 
-/// \brief Writes a triangle mesh (format by extension: .off, .obj, .ply, .stl)
-/// through CGAL::IO::write_polygon_soup. Coordinates are converted to double
+/// \brief Writes a triangle mesh (format by extension: .off, .obj, .ply, .stl):
+/// OFF by relgeo's writer (internal/off_writer.h), the others through
+/// CGAL::IO::write_polygon_soup. Coordinates are converted to double
 /// (exact types are rounded; intervals give their midpoints).
 /// \throws Unreadable_file when writing fails.
 template <class P>
 void write_mesh(const std::string& path, const Triangle_mesh<P>& m, const Write_options& options = {}) {
   using CP = CGAL::Simple_cartesian<double>::Point_3;
   using A = internal::Point_access<P>;
+  if (internal::lower_case_extension(path) == "off") {
+    const auto xyz = [&](std::size_t v) {
+      const P& p = m.vertices[v];
+      return std::array<double, 3>{internal::coordinate_to_double(A::x(p)), internal::coordinate_to_double(A::y(p)),
+                                   internal::coordinate_to_double(A::z(p))};
+    };
+    const std::string text = internal::off_text(m.vertices.size(), m.faces, xyz, options.precision);
+    std::ofstream out(path, std::ios::binary);
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.close();
+    if (!out) throw Unreadable_file("cannot write mesh file '" + path + "'");
+    if (!options.tags_path.empty()) write_feature_tags(options.tags_path, m.tags);
+    return;
+  }
   std::vector<CP> pts;
   pts.reserve(m.vertices.size());
   for (const P& p : m.vertices)

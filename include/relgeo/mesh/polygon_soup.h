@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <ranges>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,13 +31,15 @@ Triangle_mesh<P> from_polygon_soup(std::vector<P> points, const PolygonRange& po
   m.vertices = std::move(points);
   std::vector<Mesh_issue> issues;
   Index f = 0;
+  if constexpr (std::ranges::sized_range<PolygonRange>) m.faces.reserve(std::ranges::size(polygons));
+  std::vector<Index> idx;  // one buffer for every polygon
   for (const auto& poly : polygons) {
     const std::size_t n = std::size(poly);
     if (n < 3) throw Invalid_input("polygon soup: polygon " + std::to_string(f) + " has fewer than 3 corners");
     if (n > 3 && !options.triangulate_polygons)
       throw Invalid_input("polygon soup: polygon " + std::to_string(f) + " has " + std::to_string(n) +
                           " corners (set Soup_options::triangulate_polygons to split it)");
-    std::vector<Index> idx;
+    idx.clear();
     for (const auto& i : poly) {
       if (static_cast<std::size_t>(i) >= m.vertices.size())
         issues.push_back({Mesh_defect::index_out_of_range, {f, static_cast<Index>(i)}});

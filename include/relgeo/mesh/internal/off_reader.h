@@ -35,6 +35,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <span>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -45,10 +46,23 @@
 
 namespace relgeo::internal {
 
-/// The points and polygons of an OFF file (as CGAL's polygon soups).
+/// The points and polygons of an OFF file. The polygons' corners are stored
+/// one after another (one allocation, not one per face): polygon f is
+/// corners[polygon_begin[f] .. polygon_begin[f + 1]).
 struct Off_soup {
   std::vector<Point_3<double>> points;
-  std::vector<std::vector<std::size_t>> polygons;
+  std::vector<std::size_t> corners;
+  std::vector<std::size_t> polygon_begin{0};
+
+  std::size_t number_of_polygons() const { return polygon_begin.size() - 1; }
+  /// Every polygon as a view of its corners (a PolygonRange of from_polygon_soup).
+  std::vector<std::span<const std::size_t>> polygons() const {
+    std::vector<std::span<const std::size_t>> out;
+    out.reserve(number_of_polygons());
+    for (std::size_t f = 0; f < number_of_polygons(); ++f)
+      out.emplace_back(corners.data() + polygon_begin[f], polygon_begin[f + 1] - polygon_begin[f]);
+    return out;
+  }
 };
 
 class Off_reader {
@@ -84,29 +98,30 @@ class Off_reader {
       fail("the header announces " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
            " faces but only " + std::to_string(lines_left) + " lines follow");
     s.points.reserve(nv);
-    s.polygons.reserve(nf);
+    s.corners.reserve(3 * nf);
+    s.polygon_begin.reserve(nf + 1);
     const std::size_t coordinates = homogeneous ? 4 : 3;
     for (std::size_t v = 0; v < nv; ++v) {
-      t = next_tokens();
-      if (t.empty()) fail("the file ends before vertex " + std::to_string(v) + " of " + std::to_string(nv));
-      if (t.size() < coordinates)
-        fail("vertex " + std::to_string(v) + " has " + std::to_string(t.size()) + " numbers, " +
+      const std::vector<std::string_view>& line = next_tokens();
+      if (line.empty()) fail("the file ends before vertex " + std::to_string(v) + " of " + std::to_string(nv));
+      if (line.size() < coordinates)
+        fail("vertex " + std::to_string(v) + " has " + std::to_string(line.size()) + " numbers, " +
              std::to_string(coordinates) + " expected");
       double c[4] = {0, 0, 0, 1};
-      for (std::size_t k = 0; k < coordinates; ++k) c[k] = coordinate(t[k], v);
+      for (std::size_t k = 0; k < coordinates; ++k) c[k] = coordinate(line[k], v);
       s.points.push_back({c[0] / c[3], c[1] / c[3], c[2] / c[3]});
     }
     for (std::size_t f = 0; f < nf; ++f) {
-      t = next_tokens();
-      if (t.empty()) fail("the file ends before face " + std::to_string(f) + " of " + std::to_string(nf));
-      const std::size_t k = integer(t[0], "the corner count of face " + std::to_string(f));
-      if (k > t.size() - 1)
+      const std::vector<std::string_view>& line = next_tokens();
+      if (line.empty()) fail("the file ends before face " + std::to_string(f) + " of " + std::to_string(nf));
+      const std::size_t k = integer(line[0], [f] { return "the corner count of face " + std::to_string(f); });
+      if (k > line.size() - 1)
         fail("face " + std::to_string(f) + " announces " + std::to_string(k) + " corners but lists " +
-             std::to_string(t.size() - 1) + " numbers");
-      std::vector<std::size_t> poly(k);
+             std::to_string(line.size() - 1) + " numbers");
       for (std::size_t j = 0; j < k; ++j)
-        poly[j] = integer(t[j + 1], "corner " + std::to_string(j) + " of face " + std::to_string(f));
-      s.polygons.push_back(std::move(poly));
+        s.corners.push_back(
+            integer(line[j + 1], [f, j] { return "corner " + std::to_string(j) + " of face " + std::to_string(f); }));
+      s.polygon_begin.push_back(s.corners.size());
     }
     // More elements than the header announces: the counts are wrong.
     if (!next_tokens().empty())
@@ -133,9 +148,11 @@ class Off_reader {
   }
 
   /// The tokens of the next line with content (comments removed); empty at
-  /// the end of the text.
-  std::vector<std::string_view> next_tokens() {
-    std::vector<std::string_view> tokens;
+  /// the end of the text. Valid until the next call (one buffer for all
+  /// lines: no allocation per line).
+  const std::vector<std::string_view>& next_tokens() {
+    std::vector<std::string_view>& tokens = tokens_;
+    tokens.clear();
     while (tokens.empty() && pos_ < text_.size()) {
       const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
       std::string_view line = text_.substr(pos_, end - pos_);
@@ -161,15 +178,17 @@ class Off_reader {
   }
   static bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-  /// A non-negative decimal integer (an index or a count).
-  std::size_t integer(std::string_view s, const std::string& what) const {
+  /// A non-negative decimal integer (an index or a count); `what()` names it
+  /// in the message (built only then: most integers are fine).
+  template <class What>
+  std::size_t integer(std::string_view s, const What& what) const {
     std::size_t v = 0;
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (ec != std::errc() || end != s.data() + s.size())
-      fail(what + " is '" + shown(s) + "', not a non-negative integer");
+      fail(std::string(what()) + " is '" + shown(s) + "', not a non-negative integer");
     return v;
   }
-  std::size_t count(std::string_view s) const { return integer(s, "a count of the header"); }
+  std::size_t count(std::string_view s) const { return integer(s, [] { return "a count of the header"; }); }
 
   double coordinate(std::string_view s, std::size_t vertex) const {
     double v = 0;
@@ -216,7 +235,7 @@ class Off_reader {
       fail("the binary header announces " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
            " faces but only " + std::to_string(left) + " bytes follow");
     s.points.reserve(nv);
-    s.polygons.reserve(nf);
+    s.polygon_begin.reserve(nf + 1);
     for (std::size_t v = 0; v < nv; ++v) {
       double c[3];
       for (double& x : c) x = binary_float();
@@ -228,18 +247,18 @@ class Off_reader {
     for (std::size_t f = 0; f < nf; ++f) {
       const std::size_t k = binary_count("a corner count");
       if (k > (text_.size() - pos_) / 4) fail("face " + std::to_string(f) + " announces more corners than bytes follow");
-      std::vector<std::size_t> poly(k);
-      for (std::size_t& i : poly) i = binary_count("a vertex index");
+      for (std::size_t j = 0; j < k; ++j) s.corners.push_back(binary_count("a vertex index"));
+      s.polygon_begin.push_back(s.corners.size());
       const std::size_t colours = binary_count("a colour count");
       if (colours > 4) fail("face " + std::to_string(f) + " has " + std::to_string(colours) + " colour values (0..4)");
       for (std::size_t c = 0; c < colours; ++c) (void)word();
-      s.polygons.push_back(std::move(poly));
     }
     return s;
   }
 
   std::string_view text_;
   std::string path_;
+  std::vector<std::string_view> tokens_;
   std::size_t pos_ = 0;
   std::size_t line_ = 0;
 };

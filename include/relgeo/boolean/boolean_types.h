@@ -55,6 +55,10 @@ class Csg_evaluator;
 /// are those very objects: the output's validation skips what the
 /// certificates prove (Boolean_options::certified_operands), so a claim
 /// nobody checked would make it certify what it did not test.
+///
+/// It may also carry each mesh's half-edge opposites (from the check or the
+/// validation that certified it): the Boolean then does not build that
+/// operand's topology again.
 class Operand_certificate {
  public:
   Operand_certificate() = default;
@@ -62,15 +66,21 @@ class Operand_certificate {
   bool covers(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b) const {
     return a_ == &a && b_ == &b;
   }
+  /// The half-edge opposites of operand m (0: a, 1: b) when the certificate
+  /// carries them (entry 3 f + i: the half-edge across edge i of face f);
+  /// nullptr otherwise.
+  const std::vector<Index>* opposites(int m) const { return opposites_[m]; }
 
  private:
   friend class Valid_solid;
   template <IntersectionKernel_3 K>
   friend class internal::Csg_evaluator;
-  Operand_certificate(const Triangle_mesh<Point_3<double>>* a, const Triangle_mesh<Point_3<double>>* b)
-      : a_(a), b_(b) {}
+  Operand_certificate(const Triangle_mesh<Point_3<double>>* a, const Triangle_mesh<Point_3<double>>* b,
+                      const std::vector<Index>* opposites_a = nullptr, const std::vector<Index>* opposites_b = nullptr)
+      : a_(a), b_(b), opposites_{opposites_a, opposites_b} {}
   const Triangle_mesh<Point_3<double>>* a_ = nullptr;
   const Triangle_mesh<Point_3<double>>* b_ = nullptr;
+  std::array<const std::vector<Index>*, 2> opposites_{};
 };
 
 /// Options of relgeo::boolean.
@@ -223,6 +233,12 @@ struct Boolean_output {
   /// The validation report of `mesh` (Boolean_options::validate_output;
   /// empty kernel name when not run).
   Solid_report validation;
+  /// The half-edge opposites of `mesh` (entry 3 f + i: the half-edge across
+  /// edge i of face f) from its validation's topology, when the validation
+  /// found a valid solid; empty otherwise. Valid_solid::of and relgeo::csg
+  /// hand them to the next Boolean with the certificate, so that it does
+  /// not build this mesh's topology again.
+  std::vector<Index> halfedge_opposites;
 
   bool ok() const { return status == Status::ok; }
 };

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -23,6 +24,7 @@
 #include "relgeo/boolean/mesh_boolean.h"
 #include "relgeo/core/internal/stopwatch.h"
 #include "relgeo/kernel/concepts.h"
+#include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/mesh/self_intersection.h"
 
 namespace relgeo {
@@ -117,14 +119,20 @@ class Csg_evaluator {
     if (inner_.validate_output) inner_.check_operands = false;
   }
 
-  void check(const Csg_node& n, const std::string& path) const {
+  void check(const Csg_node& n, const std::string& path) {
     if (n.kind == Csg_node::Kind::solid) {
       if (!n.mesh) throw Invalid_csg_node(path, "a solid without a mesh");
       if (n.mesh->faces.empty()) throw Invalid_csg_node(path, "solid '" + n.name + "' has no faces");
       if (!options_.boolean.check_operands) return;
-      const Mesh_report report = options_.boolean.check_self_intersections ? check_solid(*n.mesh) : check_mesh(*n.mesh);
+      internal::Checked_mesh checked;
+      const Mesh_report report = options_.boolean.check_self_intersections
+                                     ? internal::check_solid<Filtered_exact_kernel>(*n.mesh, {}, checked)
+                                     : check_mesh(*n.mesh);
       if (!report.is_valid())
         throw Invalid_csg_node(path, "not a valid solid: " + std::string(Invalid_mesh("'" + n.name + "'", report.issues).what()));
+      if (report.self_intersections_checked)
+        leaf_opposites_[n.mesh.get()] =
+            std::make_shared<const std::vector<Index>>(std::move(checked.topology).take_opposites());
       return;
     }
     if (n.args.size() < 2)
@@ -133,26 +141,38 @@ class Csg_evaluator {
     for (std::size_t i = 0; i < n.args.size(); ++i) check(n.args[i], path + "." + std::to_string(i));
   }
 
-  // The node's solid; nullptr when a step failed (result_.failure says which).
-  std::shared_ptr<const Mesh_double> evaluate(const Csg_node& n, const std::string& path) {
-    if (n.kind == Csg_node::Kind::solid) return n.mesh;
-    std::vector<std::shared_ptr<const Mesh_double>> parts;
+  // A node's solid and, when known, its half-edge opposites (from the
+  // leaf's check or the validation of the Boolean that made it): the next
+  // Boolean takes them with the certificate instead of building them.
+  struct Part {
+    std::shared_ptr<const Mesh_double> mesh;
+    std::shared_ptr<const std::vector<Index>> opposites;
+    explicit operator bool() const { return mesh != nullptr; }
+  };
+
+  // The node's solid; empty when a step failed (result_.failure says which).
+  Part evaluate(const Csg_node& n, const std::string& path) {
+    if (n.kind == Csg_node::Kind::solid) {
+      const auto it = leaf_opposites_.find(n.mesh.get());
+      return {n.mesh, it == leaf_opposites_.end() ? nullptr : it->second};
+    }
+    std::vector<Part> parts;
     for (std::size_t i = 0; i < n.args.size(); ++i) {
-      auto p = evaluate(n.args[i], path + "." + std::to_string(i));
-      if (!p) return nullptr;
+      Part p = evaluate(n.args[i], path + "." + std::to_string(i));
+      if (!p) return {};
       parts.push_back(std::move(p));
     }
     if (n.kind == Csg_node::Kind::difference) {
-      auto result = parts[0];
-      for (std::size_t i = 1; i < parts.size() && result; ++i) result = step(*result, *parts[i], n.kind, path);
+      Part result = parts[0];
+      for (std::size_t i = 1; i < parts.size() && result; ++i) result = step(result, parts[i], n.kind, path);
       return result;
     }
     // Balanced pairwise reduction: small operands meet first.
     while (parts.size() > 1) {
-      std::vector<std::shared_ptr<const Mesh_double>> next;
+      std::vector<Part> next;
       for (std::size_t i = 0; i + 1 < parts.size(); i += 2) {
-        auto r = step(*parts[i], *parts[i + 1], n.kind, path);
-        if (!r) return nullptr;
+        Part r = step(parts[i], parts[i + 1], n.kind, path);
+        if (!r) return {};
         next.push_back(std::move(r));
       }
       if (parts.size() % 2) next.push_back(parts.back());
@@ -164,8 +184,9 @@ class Csg_evaluator {
   Csg_result& result() { return result_; }
 
  private:
-  std::shared_ptr<const Mesh_double> step(const Mesh_double& a, const Mesh_double& b, Csg_node::Kind kind,
-                                          const std::string& path) {
+  Part step(const Part& pa, const Part& pb, Csg_node::Kind kind, const std::string& path) {
+    const Mesh_double& a = *pa.mesh;
+    const Mesh_double& b = *pb.mesh;
     const Boolean_operation op = kind == Csg_node::Kind::union_of       ? Boolean_operation::union_of
                                  : kind == Csg_node::Kind::intersection ? Boolean_operation::intersection
                                                                          : Boolean_operation::difference;
@@ -174,7 +195,7 @@ class Csg_evaluator {
     // both operands are certified solids.
     Boolean_options options = inner_;
     if (options_.boolean.check_operands && options_.boolean.check_self_intersections && inner_.validate_output)
-      options.certified_operands = Operand_certificate(&a, &b);
+      options.certified_operands = Operand_certificate(&a, &b, pa.opposites.get(), pb.opposites.get());
     auto r = boolean(a, b, op, k_, options);
     Csg_step s{path, kind, r.ok(), r.failure, r.mesh.faces.size(), r.validation.volume.value,
                r.validation.summary(), r.rounding, 0};
@@ -189,18 +210,20 @@ class Csg_evaluator {
       result_.failure = "node " + path + " (" + std::string(to_string(kind)) + ", step " +
                         std::to_string(result_.steps.size()) + "): " + s.failure;
       result_.mesh = std::move(r.mesh);
-      return nullptr;
+      return {};
     }
     auto out = std::make_shared<Mesh_double>();
     out->vertices = std::move(r.mesh.vertices);
     out->faces = std::move(r.mesh.faces);
-    return out;
+    return {std::move(out), std::make_shared<const std::vector<Index>>(std::move(r.halfedge_opposites))};
   }
 
   const K& k_;
   Csg_options options_;
   Boolean_options inner_;
   Csg_result result_;
+  // Leaves checked by check(), by mesh (the tree holds them).
+  std::unordered_map<const Mesh_double*, std::shared_ptr<const std::vector<Index>>> leaf_opposites_;
 };
 
 }  // namespace internal
@@ -221,7 +244,7 @@ Csg_result csg(const Csg_node& tree, const K& k = K{}, const Csg_options& option
   e.check(tree, "root");
   const auto root = e.evaluate(tree, "root");
   Csg_result r = std::move(e.result());
-  if (root) r.mesh = *root;
+  if (root) r.mesh = *root.mesh;
   r.seconds = clock.elapsed();
   return r;
 }

@@ -333,9 +333,17 @@ class Boolean_engine {
     // (listed by both faces of an edge, through the opposites: no list per
     // edge of the operand, which was a third of the peak memory on large
     // operands).
-    for (int m = 0; m < 2; ++m)
-      if (opposite_[m].size() != 3 * mesh_[m]->faces.size())  // operands not checked
-        opposite_[m] = Mesh_topology::build(*mesh_[m]).take_opposites();
+    for (int m = 0; m < 2; ++m) {
+      const std::size_t halfedges = 3 * mesh_[m]->faces.size();
+      if (opposite_[m].size() == halfedges) continue;  // kept from this Boolean's check
+      // Operands certified before (a chain's earlier result, a Valid_solid)
+      // bring their opposites with the certificate; others are built here.
+      const std::vector<Index>* carried = options_.certified_operands.covers(*mesh_[0], *mesh_[1])
+                                              ? options_.certified_operands.opposites(m)
+                                              : nullptr;
+      if (carried && carried->size() == halfedges) opposite_[m] = *carried;
+      else opposite_[m] = Mesh_topology::build(*mesh_[m]).take_opposites();
+    }
     std::array<std::vector<Index>, 2> slot{std::vector<Index>(mesh_[0]->faces.size(), invalid_index),
                                            std::vector<Index>(mesh_[1]->faces.size(), invalid_index)};
     std::array<std::vector<Face_constraints>, 2> faces;
@@ -692,15 +700,20 @@ class Boolean_engine {
   // validate_solid on the output's doubles, under the exact predicates
   // whatever K. With certified operands, no pair of faces kept unchanged
   // from one operand is tested again: that operand's certificate decided it.
+  // A valid output keeps the validation's half-edge opposites
+  // (Boolean_output::halfedge_opposites): its next Boolean reuses them.
   void validate(Result& r) const {
+    Mesh_topology topology;
     if (!operands_certified()) {
-      r.validation = validate_solid<Check_kernel>(r.mesh, options_.validation);
-      return;
+      r.validation = internal::validate_solid(r.mesh, Check_kernel{}, options_.validation, nullptr, &topology);
+    } else {
+      const Certified_faces certified = unchanged_operand_faces(r);
+      r.counts.unchanged_certified_faces = static_cast<std::size_t>(
+          std::count_if(certified.group.begin(), certified.group.end(), [](std::uint8_t g) { return g != 0; }));
+      r.validation = internal::validate_solid(r.mesh, Check_kernel{}, options_.validation, &certified, &topology);
     }
-    const Certified_faces certified = unchanged_operand_faces(r);
-    r.counts.unchanged_certified_faces = static_cast<std::size_t>(
-        std::count_if(certified.group.begin(), certified.group.end(), [](std::uint8_t g) { return g != 0; }));
-    r.validation = internal::validate_solid(r.mesh, Check_kernel{}, options_.validation, &certified);
+    r.halfedge_opposites.clear();
+    if (r.validation.is_valid_solid()) r.halfedge_opposites = std::move(topology).take_opposites();
   }
 
   // Per output face: 1 + its operand when it is, unchanged, a face of that

@@ -18,10 +18,12 @@
 #include <memory>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "relgeo/boolean/boolean_types.h"
 #include "relgeo/boolean/mesh_boolean.h"
 #include "relgeo/kernel/concepts.h"
+#include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/mesh/self_intersection.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
@@ -34,9 +36,10 @@ class Valid_solid {
   /// accepts (A union nothing is A).
   /// \throws Invalid_operand (operand "solid") naming every defect.
   explicit Valid_solid(Mesh_double m) {
-    Mesh_report report = check_solid(m);
+    internal::Checked_mesh checked;
+    Mesh_report report = internal::check_solid<Filtered_exact_kernel>(m, {}, checked);
     if (!report.is_valid()) throw Invalid_operand("solid", std::move(report.issues));
-    mesh_ = std::make_shared<const Mesh_double>(std::move(m));
+    held_ = std::make_shared<const Held>(Held{std::move(m), std::move(checked.topology).take_opposites()});
   }
 
   /// The output of a Boolean as a certified solid when the Boolean succeeded
@@ -51,22 +54,28 @@ class Valid_solid {
     Mesh_double m;
     m.vertices = r.mesh.vertices;
     m.faces = r.mesh.faces;
-    return Valid_solid(std::move(m), Certified{});
+    return Valid_solid(Held{std::move(m), r.halfedge_opposites});
   }
 
-  const Mesh_double& mesh() const { return *mesh_; }
+  const Mesh_double& mesh() const { return held_->mesh; }
 
   /// That the meshes of `a` and `b` are certified: what a Boolean of two
-  /// Valid_solids tells the engine (Boolean_options::certified_operands).
+  /// Valid_solids tells the engine (Boolean_options::certified_operands),
+  /// with their half-edge opposites.
   static Operand_certificate certificate(const Valid_solid& a, const Valid_solid& b) {
-    return Operand_certificate(a.mesh_.get(), b.mesh_.get());
+    return Operand_certificate(&a.held_->mesh, &b.held_->mesh, &a.held_->opposites, &b.held_->opposites);
   }
 
  private:
-  struct Certified {};
-  Valid_solid(Mesh_double m, Certified) : mesh_(std::make_shared<const Mesh_double>(std::move(m))) {}
+  // The mesh and its half-edge opposites (empty when not known), never
+  // changed once certified.
+  struct Held {
+    Mesh_double mesh;
+    std::vector<Index> opposites;
+  };
+  explicit Valid_solid(Held h) : held_(std::make_shared<const Held>(std::move(h))) {}
 
-  std::shared_ptr<const Mesh_double> mesh_;
+  std::shared_ptr<const Held> held_;
 };
 
 /// relgeo::boolean of two certified solids: the same result as on their

@@ -337,15 +337,19 @@ std::vector<unsigned char> faces_around_open_faces(const Triangle_mesh<P>& m, co
 /// validate_solid, except that the self-intersection test leaves to the
 /// caller's certificates what they decide (Certified_faces: pairs of faces
 /// kept unchanged from one certified mesh). nullptr: every pair is tested.
+/// `topology` (when not nullptr) receives the mesh's topology as
+/// Mesh_topology::build_checked makes it (the Boolean keeps the half-edge
+/// opposites of a valid output for its next use).
 template <Kernel K, class P>
 Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_validation_options& o,
-                            const Certified_faces* certified) {
+                            const Certified_faces* certified, Mesh_topology* topology_out = nullptr) {
   Solid_report r;
   r.kernel = K::name();
   r.vertices = m.vertices.size(), r.faces = m.faces.size();
   // check_mesh's checks but the collinearity test, decided below under K on
   // K's points (with the degenerate faces the self-intersection test skips).
-  Mesh_topology topology;
+  Mesh_topology own_topology;
+  Mesh_topology& topology = topology_out ? *topology_out : own_topology;
   const Mesh_report mr = internal::combinatorial_mesh_report(m, o.mesh, topology);
   internal::sort_mesh_issues(mr, o, r);
 
@@ -508,7 +512,7 @@ void require_valid_solid(const Triangle_mesh<P>& m, const Solid_validation_optio
 #define RELGEO_VALIDATE_SOLID_INSTANCE(PREFIX, K)                                                                   \
   PREFIX Solid_report internal::validate_solid<K, Point_3<double>>(const Triangle_mesh<Point_3<double>>&, const K&, \
                                                                    const Solid_validation_options&,                 \
-                                                                   const internal::Certified_faces*);
+                                                                   const internal::Certified_faces*, Mesh_topology*);
 #if RELGEO_LINKS_COMPILED
 RELGEO_COMPILED_KERNELS(RELGEO_VALIDATE_SOLID_INSTANCE, extern template)
 #endif

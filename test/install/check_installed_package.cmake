@@ -9,6 +9,23 @@ endif()
 if(NOT EXISTS ${WORK_DIR}/prefix/include/relgeo/kernel.h)
   message(FATAL_ERROR "headers were not installed")
 endif()
+# The tool's OpenCASCADE plug-in, when the build made one, goes to
+# <prefix>/<libdir>/relgeo, where the installed tool looks for it.
+file(GLOB built_plugin ${BUILD_DIR}/tools/relgeo/librelgeo_occt_join.so)
+if(built_plugin)
+  file(GLOB_RECURSE installed_plugin ${WORK_DIR}/prefix/lib*/relgeo/librelgeo_occt_join.so)
+  if(NOT installed_plugin)
+    message(FATAL_ERROR "the OpenCASCADE plug-in of `relgeo join` was not installed to <prefix>/lib/relgeo")
+  endif()
+  # The installed copy loads and answers: the installed tool, pointed at it,
+  # reads a STEP file that does not exist and gives the plug-in's error.
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env RELGEO_OCCT_PLUGIN=${installed_plugin}
+                          ${WORK_DIR}/prefix/bin/relgeo join ${WORK_DIR}/no_such_model.step --mesh ${WORK_DIR}/none.off
+                  RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+  if(NOT err MATCHES "cannot open STEP file")
+    message(FATAL_ERROR "the installed tool did not reach its OpenCASCADE plug-in: ${err}")
+  endif()
+endif()
 # The client uses two settings of relgeo's build (its cache):
 # - its ccache, when it has one: the six programs cost about a minute of CPU
 #   cold, the Booleans most;

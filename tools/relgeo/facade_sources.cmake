@@ -5,9 +5,10 @@
 # relgeo_tool_facades (CMakeLists.txt here), linked by the tool and by the
 # Python module (python/).
 # Paths relative to tools/relgeo.
+# cli/text.cpp and kernels/registry.cpp come in the object library
+# relgeo_tool_kernel_registry (CMakeLists.txt), which the OpenCASCADE plug-in
+# links too.
 set(relgeo_tool_facade_sources
-  cli/text.cpp
-  kernels/registry.cpp
   commands/orient_grid/dispatch.cpp
   commands/hull/facade.cpp
   commands/hull/dispatch.cpp

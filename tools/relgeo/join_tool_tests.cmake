@@ -68,6 +68,19 @@ relgeo_join_bad_input(join_missing_surface "cannot read surface file .*no_such_m
   ${_jd}/no_such_model.json --mesh ${_jd}/join_folding_0.off)
 relgeo_join_bad_input(join_unreadable_surface "join_not_json.json line 1: not JSON"
   ${_jd}/join_not_json.json --mesh ${_jd}/join_folding_0.off)
+# A STEP file goes to the OpenCASCADE plug-in (opened on first use): a
+# missing one is its typed error, found and reported through the plug-in.
+if(TARGET relgeo_occt_join)
+  relgeo_join_bad_input(join_missing_step_file "cannot open STEP file"
+    ${_jd}/no_such_model.step --mesh ${_jd}/join_folding_0.off)
+  # RELGEO_OCCT_PLUGIN naming no plug-in: the one line that says so (and
+  # which path it tried), not a silent fall-back to another copy.
+  add_test(NAME tool_join_occt_plugin_not_found
+    COMMAND ${CMAKE_COMMAND} -E env RELGEO_OCCT_PLUGIN=${_tmp}/no_such_plugin.so $<TARGET_FILE:relgeo_tool>
+            join ${_jd}/no_such_model.step --mesh ${_jd}/join_folding_0.off)
+  set_tests_properties(tool_join_occt_plugin_not_found PROPERTIES LABELS tool
+    PASS_REGULAR_EXPRESSION "relgeo: error: .*STEP/IGES input needs OpenCASCADE: the OpenCASCADE plug-in librelgeo_occt_join.so cannot be loaded \\(.*no_such_plugin.so")
+endif()
 relgeo_join_bad_input(join_mesh_does_not_project "a mesh does not project onto its face \\(outside_domain\\)"
   ${_jd}/join_folding.json --mesh ${_jd}/join_folding_far.off --mesh ${_jd}/join_folding_1.off)
 relgeo_join_bad_input(join_meshes_do_not_fit "the meshes do not fit the surface model"
@@ -97,7 +110,7 @@ relgeo_tool_test(experiment_quick_joining 0
 # files to files under the kernels directly: GoogleTest, relgeo_add_test of
 # test/CMakeLists.txt (include folder: this one).
 find_package(GTest REQUIRED)
-set(_join_test_libs relgeo::cgal relgeo::eigen relgeo::io relgeo_joining_fixtures)
+set(_join_test_libs relgeo::cgal relgeo::eigen relgeo::io relgeo_joining_fixtures relgeo_tool_occt_loader)
 if(TARGET relgeo::occt)
   list(APPEND _join_test_libs relgeo::occt)
 endif()

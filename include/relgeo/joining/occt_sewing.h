@@ -15,19 +15,12 @@
 #include "relgeo/joining/internal/join_steps.h"
 #include "relgeo/joining/internal/occt_tessellation.h"
 #include "relgeo/joining/internal/sewn_measures.h"
+#include "relgeo/joining/occt_sewing_options.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/surfaces/occt_conversion.h"
 
 namespace relgeo {
-
-/// Options of occt_sewing (lengths relative to the model's size: the
-/// diagonal of the input meshes' bounding box).
-struct Occt_sewing_options {
-  double sewing_tolerance = 1e-3;   ///< BRepBuilderAPI_Sewing's tolerance [1e-3]
-  double linear_deflection = 2e-4;  ///< BRepMesh's chordal deflection [2e-4]
-  double angular_deflection = 0.3;  ///< radians [0.3]
-};
 
 /// \brief Sews the model's faces with OpenCASCADE and tessellates the shell
 /// (the input meshes are only measured, as "before").

@@ -1,6 +1,8 @@
 // tools/relgeo/commands/join/dispatch.cpp — run_join_tool under the kernels
 // of the joiner's certified checks (the compile firewall: the only file of
 // `join` naming kernel types and instantiating run_with.h).
+#include "kernels/dispatch.h"
+
 #include <cmath>
 #include <map>
 #include <optional>
@@ -8,22 +10,14 @@
 
 #include "cli/text.h"
 #include "commands/join/facade.h"
+#include "commands/join/join_kernels.h"
 #include "commands/join/run_with.h"
-#include "kernels/dispatch.h"
 #include "relgeo/joining/error_measures.h"
 #include "relgeo/joining/projection.h"
 
 namespace relgeo::tool {
 
 namespace {
-
-/// Certified kernels of relgeo with double coordinates (the joiner's checks
-/// take (u,v) points as doubles): failsafe, interval, filtered, exact.
-struct Join_kernels {
-  template <class K>
-  static constexpr bool admits = std::is_same_v<K, Failsafe_kernel<double>> || std::is_same_v<K, Interval_kernel> ||
-                                 std::is_same_v<K, Filtered_exact_kernel> || std::is_same_v<K, Exact_kernel>;
-};
 
 template <std::size_t... I>
 std::vector<std::string> admitted_names(std::index_sequence<I...>) {

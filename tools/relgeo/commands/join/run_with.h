@@ -7,8 +7,8 @@
 // test, run_with_test.cpp.
 //
 // Needs CGAL, Eigen and relgeo::io (nlohmann-json); STEP/IGES input and the
-// occt method need relgeo::occt (RELGEO_HAS_OCCT); without it they are
-// Invalid_input.
+// occt method run in the OpenCASCADE plug-in (plugins/occt/occt_join.h),
+// built with relgeo::occt; without it they are Invalid_input.
 #pragma once
 
 #include <filesystem>
@@ -18,16 +18,14 @@
 #include <utility>
 #include <vector>
 
+#include "plugins/occt/occt_join.h"
 #include "relgeo/core/errors.h"
 #include "relgeo/joining/join_report_json.h"
 #include "relgeo/joining/joiner.h"
 #include "relgeo/joining/naive_sewing.h"
+#include "relgeo/joining/occt_sewing_options.h"
 #include "relgeo/mesh/mesh_io.h"
 #include "relgeo/surfaces/surface_json.h"
-#ifdef RELGEO_HAS_OCCT
-#include "relgeo/joining/occt_sewing.h"
-#include "relgeo/surfaces/occt_io.h"
-#endif
 
 namespace relgeo::tool {
 
@@ -53,9 +51,7 @@ struct Join_command_options {
   /// normal-vector error (after joining) exceeds them is "failed" [none].
   double max_absolute_error = std::numeric_limits<double>::infinity();
   double max_normal_error = std::numeric_limits<double>::infinity();
-#ifdef RELGEO_HAS_OCCT
   Occt_sewing_options occt{};
-#endif
 };
 
 /// run_join_with's answer: the joining report, and whether the result is valid.
@@ -79,15 +75,11 @@ struct Join_command_report {
 };
 
 /// Reads the surface model of a file (by extension). \throws Unreadable_file,
-/// Invalid_input (STEP/IGES without relgeo::occt).
+/// Invalid_input (STEP/IGES without the OpenCASCADE plug-in).
 inline Surface_model read_surface_model(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext == ".json") return read_surface_model_json(path);
-#ifdef RELGEO_HAS_OCCT
-  return read_cad_model(path);
-#else
-  throw Invalid_input("'" + path + "': STEP/IGES input needs relgeo built with OpenCASCADE (relgeo::occt)");
-#endif
+  return occt_join_functions("'" + path + "': STEP/IGES input").read_cad_model(path);
 }
 
 /// \brief Reads the model and the meshes, joins them by the method named in
@@ -113,11 +105,7 @@ Join_command_report run_join_with(const Join_command_options& o) {
   } else if (o.method == "naive") {
     result = naive_sewing(model, meshes, K{}, o.join);
   } else if (o.method == "occt") {
-#ifdef RELGEO_HAS_OCCT
-    result = occt_sewing(model, meshes, K{}, o.occt);
-#else
-    throw Invalid_input("method occt needs relgeo built with OpenCASCADE (relgeo::occt)");
-#endif
+    result = occt_join_functions("method occt").occt_sewing(K::name(), model, meshes, o.occt);
   } else {
     throw Invalid_input("unknown joining method '" + o.method + "' (whitney, naive or occt)");
   }

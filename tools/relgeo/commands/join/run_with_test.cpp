@@ -17,6 +17,14 @@
 #include "relgeo/kernel/exact_kernel.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo_fixtures/joining/test_models.h"
+#ifdef RELGEO_HAS_OCCT
+// The test makes its STEP file itself; run_join_with reads it through the plug-in.
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <TopExp_Explorer.hxx>
+
+#include "relgeo/surfaces/occt_conversion.h"
+#include "relgeo/surfaces/occt_io.h"
+#endif
 
 namespace {
 

@@ -19,7 +19,7 @@ namespace {
 // error, not skipped); else the build's, the one installed beside this
 // executable (its prefix: an install to another prefix than the configured
 // one), the one installed to the configured prefix.
-std::vector<std::string> plugin_paths() {
+[[maybe_unused]] std::vector<std::string> plugin_paths() {
   std::vector<std::string> paths;
   if (const char* env = std::getenv("RELGEO_OCCT_PLUGIN"); env && *env) return {env};
 #ifdef RELGEO_OCCT_PLUGIN_BUILD_PATH

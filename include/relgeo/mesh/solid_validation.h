@@ -337,7 +337,7 @@ std::vector<unsigned char> faces_around_open_faces(const Triangle_mesh<P>& m, co
 /// validate_solid, except that the self-intersection test leaves to the
 /// caller's certificates what they decide (Certified_faces: pairs of faces
 /// kept unchanged from one certified mesh). nullptr: every pair is tested.
-/// `topology` (when not nullptr) receives the mesh's topology as
+/// `topology_out` (when not nullptr) receives the mesh's topology as
 /// Mesh_topology::build_checked makes it (the Boolean keeps the half-edge
 /// opposites of a valid output for its next use).
 template <Kernel K, class P>

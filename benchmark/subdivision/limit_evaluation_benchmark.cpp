@@ -16,7 +16,9 @@
 //   corner-2^-8/double        next to the corners of a jittered creased box;
 //   bounds/double             Loop_error_bounds::compute, faces per second
 //                             (icosphere(2) at level 1: 1280 faces, 60 of
-//                             them irregular).
+//                             them irregular);
+//   bounds/exact              the same in GMP rationals, an icosahedron at
+//                             level 0 with shallow depths (20 faces).
 // items_per_second is points (faces for bounds) per CPU second. No peer: CGAL
 // and OpenMesh evaluate Loop surfaces only by refinement (OpenSubdiv, which
 // has patch evaluation, is not packaged on Debian 12).
@@ -159,6 +161,24 @@ void register_all() {
       for (auto _ : state) {
         auto r = eb.compute(*m, 1);
         faces = r.refined.faces.size();
+        benchmark::DoNotOptimize(r.basis_range.data());
+      }
+      state.SetItemsProcessed(state.iterations() * int64_t(faces));
+      state.counters["faces"] = double(faces);
+    })->Unit(benchmark::kMillisecond);
+  }
+  // Error bounds in GMP rationals, of the control mesh's own limit mesh (level
+  // 0) with the shallow depths of the stress run over CGAL's data set: an
+  // icosahedron (20 faces, all valence 5).
+  {
+    auto m = std::make_shared<Triangle_mesh<Exact_kernel::Point_3>>(convert<Exact_kernel::FT>(icosphere(0)));
+    benchmark::RegisterBenchmark("limit/bounds/exact", [m](benchmark::State& state) {
+      const Loop_error_bounds<Exact_kernel> eb(Loop_options{},
+                                               {.irregular_depth = 2, .regular_depth = 1, .universal_depth = 2});
+      std::size_t faces = 0;
+      for (auto _ : state) {
+        auto r = eb.compute(*m, 0);
+        faces = r.limit_mesh.faces.size();
         benchmark::DoNotOptimize(r.basis_range.data());
       }
       state.SetItemsProcessed(state.iterations() * int64_t(faces));

@@ -1,9 +1,9 @@
 // test/support/implicit_oracle.h — exact signs of predicates on implicit
 // points, computed independently of relgeo's implicit-point code: the exact
 // point is found by Gaussian elimination in GMP rationals (not relgeo's
-// homogeneous formulas), and the predicates are evaluated on its rational
-// coordinates with the formulas of exact_oracle.cpp (triple product,
-// expanded 2D orientation).
+// homogeneous formulas) and kept over one common denominator, and the
+// predicates are evaluated on it with the formulas of exact_oracle.cpp
+// (triple product, expanded 2D orientation) in GMP integers.
 #pragma once
 
 #include <gmpxx.h>
@@ -16,7 +16,16 @@
 
 namespace relgeo::test {
 
-using Exact_point = std::array<mpq_class, 3>;
+/// An exact point (x, y, z) = (X, Y, Z) / W with integers and W > 0. One
+/// denominator for the three coordinates: the predicates then compute in
+/// integers, without the gcd that every rational operation pays (the
+/// oracle's time was mostly GMP's gcd).
+struct Exact_point {
+  std::array<mpz_class, 3> numerators;  // X, Y, Z
+  mpz_class denominator;                // W > 0
+  /// The coordinate `axis` as a rational (canonical).
+  mpq_class coordinate(int axis) const;
+};
 
 /// The exact point, or nullopt when it does not exist (line parallel to the
 /// plane, dependent planes).

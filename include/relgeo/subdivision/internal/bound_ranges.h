@@ -46,33 +46,15 @@ bool possibly_le(const FT& a, const FT& b, double tol) {
   else return !(b < a);
 }
 
-/// Ranges of integer nets (12 x dim) refined `depth` times, in the scaled
-/// integers of integer_net_ranges below: each refinement keeps the child's
-/// values times 16, the Bezier coefficients are kept times 24.
-inline void integer_net_ranges(const std::vector<mpz_class>& net, std::size_t dim, unsigned depth,
-                               std::vector<mpz_class>& lo, std::vector<mpz_class>& hi, std::vector<bool>& have) {
-  if (depth == 0) {
-    for (std::size_t d = 0; d < dim; ++d)
-      for (const mpz_class& x : loop_patch_bezier_times_24(net.data() + d, dim)) {
-        if (!have[d] || x < lo[d]) lo[d] = x;
-        if (!have[d] || hi[d] < x) hi[d] = x;
-        have[d] = true;
-      }
-    return;
-  }
-  std::vector<mpz_class> child(12 * dim);
-  for (int c = 0; c < 4; ++c) {
-    for (std::size_t d = 0; d < dim; ++d) {
-      const std::array<mpz_class, 12> r = loop_patch_child_times_16(net.data() + d, c, dim);
-      for (int i = 0; i < 12; ++i) child[i * dim + d] = r[i];
-    }
-    integer_net_ranges(child, dim, depth - 1, lo, hi, have);
-  }
-}
+template <class FT>
+void regular_net_ranges(const std::vector<FT>& net, std::size_t dim, unsigned depth, const FT& one_24, const FT& one_16,
+                        std::vector<FT>& lo, std::vector<FT>& hi, std::vector<bool>& have);
 
 /// regular_net_ranges in rationals: the net over one common denominator W,
-/// so that refinement and Bezier coefficients are integer sums. Every value
-/// of the recursion is then N / (W 24 16^depth) with one positive
+/// so that refinement and Bezier coefficients are integer sums (the recursion
+/// on integers, with 1 for 1/16 and 1/24, keeps each child times 16 and each
+/// coefficient times 24). Every
+/// value of the recursion is then N / (W 24 16^depth) with one positive
 /// denominator: ranges compare numerators, and only the final min and max
 /// become rationals. (Rational arithmetic reduces every sum by a gcd: three
 /// quarters of the exact error bounds' time went there.)
@@ -87,7 +69,8 @@ inline void rational_net_ranges(const std::vector<mpq_class>& net, std::size_t d
   }
   std::vector<mpz_class> ilo(dim), ihi(dim);
   std::vector<bool> ihave(dim, false);
-  integer_net_ranges(numerators, dim, depth, ilo, ihi, ihave);
+  const mpz_class one = 1;
+  regular_net_ranges(numerators, dim, depth, one, one, ilo, ihi, ihave);
   mpz_class denominator = w * 24;
   denominator <<= 4 * depth;
   for (std::size_t d = 0; d < dim; ++d) {

@@ -1,7 +1,8 @@
 // Fuzz harness: implicit points (LPI, TPI; relgeo/kernel/implicit_point.h)
 // and the predicates on them under the certified kernels, against the
 // independent exact oracle of test/support/implicit_oracle.h (the point by
-// Gaussian elimination in GMP rationals, the predicates on its coordinates).
+// Gaussian elimination in GMP rationals, the predicates in integers over its
+// common denominator).
 //
 // Input: byte 0 the kernel, then a pool of up to 10 explicit points (new
 // coordinates, duplicates, points on the line or in the plane of earlier
@@ -60,7 +61,7 @@ void check(Input& in, const std::vector<Coordinates>& pool) {
       for (int j = 0; j < 3; ++j) {
         if (std::isinf(a.error)) break;
         require(std::isfinite(c[j]), who + ": a finite approximation with a finite error");
-        const mpq_class diff = abs(mpq_class(c[j]) - (*x)[j]);
+        const mpq_class diff = abs(mpq_class(c[j]) - x->coordinate(j));
         require(diff <= mpq_class(a.error), who + ": the approximation is within its stated error");
       }
     }

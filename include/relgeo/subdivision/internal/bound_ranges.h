@@ -53,10 +53,9 @@ void regular_net_ranges(const std::vector<FT>& net, std::size_t dim, unsigned de
 /// regular_net_ranges in rationals: the net over one common denominator W,
 /// so that refinement and Bezier coefficients are integer sums (the recursion
 /// on integers, with 1 for 1/16 and 1/24, keeps each child times 16 and each
-/// coefficient times 24). Every
-/// value of the recursion is then N / (W 24 16^depth) with one positive
-/// denominator: ranges compare numerators, and only the final min and max
-/// become rationals. (Rational arithmetic reduces every sum by a gcd: three
+/// coefficient times 24). Every value of the recursion is then
+/// N / (W 24 16^depth) with one positive denominator: ranges compare
+/// numerators, and only the final min and max become rationals. (Rational arithmetic reduces every sum by a gcd: three
 /// quarters of the exact error bounds' time went there.)
 inline void rational_net_ranges(const std::vector<mpq_class>& net, std::size_t dim, unsigned depth,
                                 std::vector<mpq_class>& lo, std::vector<mpq_class>& hi, std::vector<bool>& have) {
@@ -101,14 +100,16 @@ void combine_rows(const int (&table)[Rows][12], const FT* net, std::size_t dim, 
   }
 }
 
-/// regular_net_ranges in floating point: the same values compared in the
-/// same order, computed a row at a time over all dims with the buffers of
-/// every level allocated once (`scratch`: 12 x dim per level, then 15 x dim).
-/// The per-dim, per-value form took half the time of the failsafe bounds of
-/// the stress run over CGAL's data set.
+/// The recursion of regular_net_ranges a row at a time: each refinement and
+/// each Bezier coefficient computed for every dim at once, with the buffers
+/// of every level allocated once (`scratch`: 12 x dim per level, then 15 x
+/// dim). For each dim, the same operations in the same order as one value at
+/// a time, and the values compared in the same order. (One value at a time
+/// took half the time of the failsafe bounds of the stress run over CGAL's
+/// data set.)
 template <class FT>
-void floating_net_ranges(const FT* net, std::size_t dim, unsigned depth, const FT& one_24, const FT& one_16,
-                         FT* scratch, std::vector<FT>& lo, std::vector<FT>& hi, std::vector<bool>& have) {
+void net_ranges_by_rows(const FT* net, std::size_t dim, unsigned depth, const FT& one_24, const FT& one_16, FT* scratch,
+                        std::vector<FT>& lo, std::vector<FT>& hi, std::vector<bool>& have) {
   if (depth == 0) {
     combine_rows(loop_patch_bezier_x24, net, dim, one_24, scratch);
     for (std::size_t d = 0; d < dim; ++d) {
@@ -117,7 +118,7 @@ void floating_net_ranges(const FT* net, std::size_t dim, unsigned depth, const F
     }
     for (std::size_t c = 0; c < 15; ++c)
       for (std::size_t d = 0; d < dim; ++d) {
-        const FT x = scratch[c * dim + d];
+        const FT& x = scratch[c * dim + d];
         lo[d] = min_of(lo[d], x);
         hi[d] = max_of(hi[d], x);
       }
@@ -125,7 +126,7 @@ void floating_net_ranges(const FT* net, std::size_t dim, unsigned depth, const F
   }
   for (int c = 0; c < 4; ++c) {
     combine_rows(loop_patch_child_x16[c], net, dim, one_16, scratch);
-    floating_net_ranges(scratch, dim, depth - 1, one_24, one_16, scratch + 12 * dim, lo, hi, have);
+    net_ranges_by_rows(scratch, dim, depth - 1, one_24, one_16, scratch + 12 * dim, lo, hi, have);
   }
 }
 
@@ -136,30 +137,9 @@ void regular_net_ranges(const std::vector<FT>& net, std::size_t dim, unsigned de
                         std::vector<FT>& lo, std::vector<FT>& hi, std::vector<bool>& have) {
   if constexpr (std::is_same_v<FT, mpq_class>) {
     rational_net_ranges(net, dim, depth, lo, hi, have);
-  } else if constexpr (std::is_floating_point_v<FT>) {
-    std::vector<FT> scratch((12 * std::size_t(depth) + 15) * dim);
-    floating_net_ranges(net.data(), dim, depth, one_24, one_16, scratch.data(), lo, hi, have);
   } else {
-    if (depth == 0) {
-      for (std::size_t d = 0; d < dim; ++d) {
-        const std::array<FT, 15> b = loop_patch_bezier_times_24(net.data() + d, dim);
-        for (const FT& x24 : b) {
-          const FT x = FT(x24 * one_24);
-          lo[d] = have[d] ? min_of(lo[d], x) : x;
-          hi[d] = have[d] ? max_of(hi[d], x) : x;
-          have[d] = true;
-        }
-      }
-      return;
-    }
-    std::vector<FT> child(12 * dim);
-    for (int c = 0; c < 4; ++c) {
-      for (std::size_t d = 0; d < dim; ++d) {
-        const std::array<FT, 12> r = loop_patch_child_times_16(net.data() + d, c, dim);
-        for (int i = 0; i < 12; ++i) child[i * dim + d] = FT(r[i] * one_16);
-      }
-      regular_net_ranges(child, dim, depth - 1, one_24, one_16, lo, hi, have);
-    }
+    std::vector<FT> scratch((12 * std::size_t(depth) + 15) * dim);
+    net_ranges_by_rows(net.data(), dim, depth, one_24, one_16, scratch.data(), lo, hi, have);
   }
 }
 

@@ -46,42 +46,6 @@ bool possibly_le(const FT& a, const FT& b, double tol) {
   else return !(b < a);
 }
 
-template <class FT>
-void regular_net_ranges(const std::vector<FT>& net, std::size_t dim, unsigned depth, const FT& one_24, const FT& one_16,
-                        std::vector<FT>& lo, std::vector<FT>& hi, std::vector<bool>& have);
-
-/// regular_net_ranges in rationals: the net over one common denominator W,
-/// so that refinement and Bezier coefficients are integer sums (the recursion
-/// on integers, with 1 for 1/16 and 1/24, keeps each child times 16 and each
-/// coefficient times 24). Every value of the recursion is then
-/// N / (W 24 16^depth) with one positive denominator: ranges compare
-/// numerators, and only the final min and max become rationals. (Rational arithmetic reduces every sum by a gcd: three
-/// quarters of the exact error bounds' time went there.)
-inline void rational_net_ranges(const std::vector<mpq_class>& net, std::size_t dim, unsigned depth,
-                                std::vector<mpq_class>& lo, std::vector<mpq_class>& hi, std::vector<bool>& have) {
-  mpz_class w = 1;
-  for (const mpq_class& x : net) mpz_lcm(w.get_mpz_t(), w.get_mpz_t(), x.get_den_mpz_t());
-  std::vector<mpz_class> numerators(net.size());
-  for (std::size_t i = 0; i < net.size(); ++i) {
-    mpz_divexact(numerators[i].get_mpz_t(), w.get_mpz_t(), net[i].get_den_mpz_t());
-    numerators[i] *= net[i].get_num();
-  }
-  std::vector<mpz_class> ilo(dim), ihi(dim);
-  std::vector<bool> ihave(dim, false);
-  const mpz_class one = 1;
-  regular_net_ranges(numerators, dim, depth, one, one, ilo, ihi, ihave);
-  mpz_class denominator = w * 24;
-  denominator <<= 4 * depth;
-  for (std::size_t d = 0; d < dim; ++d) {
-    if (!ihave[d]) continue;
-    mpq_class a(ilo[d], denominator), b(ihi[d], denominator);
-    a.canonicalize(), b.canonicalize();
-    lo[d] = have[d] ? min_of(lo[d], a) : a;
-    hi[d] = have[d] ? max_of(hi[d], b) : b;
-    have[d] = true;
-  }
-}
-
 /// out[r * dim + d] = (sum_i table[r][i] net[i * dim + d]) * scale for every
 /// row r: the loop over the dims innermost and contiguous (vectorised), the
 /// same operations in the same order for each dim as integer_combination.
@@ -127,6 +91,40 @@ void net_ranges_by_rows(const FT* net, std::size_t dim, unsigned depth, const FT
   for (int c = 0; c < 4; ++c) {
     combine_rows(loop_patch_child_x16[c], net, dim, one_16, scratch);
     net_ranges_by_rows(scratch, dim, depth - 1, one_24, one_16, scratch + 12 * dim, lo, hi, have);
+  }
+}
+
+/// regular_net_ranges in rationals: the net over one common denominator W,
+/// so that refinement and Bezier coefficients are integer sums (the recursion
+/// on integers, with 1 for 1/16 and 1/24, keeps each child times 16 and each
+/// coefficient times 24). Every value of the recursion is then
+/// N / (W 24 16^depth) with one positive denominator: ranges compare
+/// numerators, and only the final min and max become rationals. (Rational
+/// arithmetic reduces every sum by a gcd: three quarters of the exact error
+/// bounds' time went there.)
+inline void rational_net_ranges(const std::vector<mpq_class>& net, std::size_t dim, unsigned depth,
+                                std::vector<mpq_class>& lo, std::vector<mpq_class>& hi, std::vector<bool>& have) {
+  mpz_class w = 1;
+  for (const mpq_class& x : net) mpz_lcm(w.get_mpz_t(), w.get_mpz_t(), x.get_den_mpz_t());
+  std::vector<mpz_class> numerators(net.size());
+  for (std::size_t i = 0; i < net.size(); ++i) {
+    mpz_divexact(numerators[i].get_mpz_t(), w.get_mpz_t(), net[i].get_den_mpz_t());
+    numerators[i] *= net[i].get_num();
+  }
+  std::vector<mpz_class> ilo(dim), ihi(dim);
+  std::vector<bool> ihave(dim, false);
+  const mpz_class one = 1;
+  std::vector<mpz_class> scratch((12 * std::size_t(depth) + 15) * dim);
+  net_ranges_by_rows(numerators.data(), dim, depth, one, one, scratch.data(), ilo, ihi, ihave);
+  mpz_class denominator = w * 24;
+  denominator <<= 4 * depth;
+  for (std::size_t d = 0; d < dim; ++d) {
+    if (!ihave[d]) continue;
+    mpq_class a(ilo[d], denominator), b(ihi[d], denominator);
+    a.canonicalize(), b.canonicalize();
+    lo[d] = have[d] ? min_of(lo[d], a) : a;
+    hi[d] = have[d] ? max_of(hi[d], b) : b;
+    have[d] = true;
   }
 }
 

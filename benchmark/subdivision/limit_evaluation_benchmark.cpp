@@ -81,6 +81,25 @@ std::vector<Index> faces_of_kind(const Loop_limit_surface<K>& s, Loop_patch_kind
   return f;
 }
 
+// Loop_error_bounds::compute of `mesh` at `level`, faces of the refined mesh
+// per second.
+template <class K>
+void register_bounds(const std::string& name, Triangle_mesh<typename K::Point_3> mesh, Loop_bound_options depths,
+                     unsigned level) {
+  auto m = std::make_shared<const Triangle_mesh<typename K::Point_3>>(std::move(mesh));
+  benchmark::RegisterBenchmark(name.c_str(), [m, depths, level](benchmark::State& state) {
+    const Loop_error_bounds<K> eb(Loop_options{}, depths);
+    std::size_t faces = 0;
+    for (auto _ : state) {
+      auto r = eb.compute(*m, level);
+      faces = r.refined.faces.size();
+      benchmark::DoNotOptimize(r.basis_range.data());
+    }
+    state.SetItemsProcessed(state.iterations() * int64_t(faces));
+    state.counters["faces"] = double(faces);
+  })->Unit(benchmark::kMillisecond);
+}
+
 template <class K>
 void register_eval(const std::string& name, std::shared_ptr<Loop_limit_surface<K>> s, std::vector<Query> queries,
                    bool jet = false) {
@@ -152,39 +171,12 @@ void register_all() {
       for (int i = 0; i < 8; ++i) q.push_back({f, std::ldexp(1.0 + i, -11), std::ldexp(8.0 - i, -11)});
     register_eval<D>("corner-2^-8/double", s, q);
   }
-  // Error bounds.
-  {
-    auto m = std::make_shared<Mesh_d>(icosphere(2));
-    benchmark::RegisterBenchmark("limit/bounds/double", [m](benchmark::State& state) {
-      const Loop_error_bounds<D> eb;
-      std::size_t faces = 0;
-      for (auto _ : state) {
-        auto r = eb.compute(*m, 1);
-        faces = r.refined.faces.size();
-        benchmark::DoNotOptimize(r.basis_range.data());
-      }
-      state.SetItemsProcessed(state.iterations() * int64_t(faces));
-      state.counters["faces"] = double(faces);
-    })->Unit(benchmark::kMillisecond);
-  }
-  // Error bounds in GMP rationals, of the control mesh's own limit mesh (level
-  // 0) with the shallow depths of the stress run over CGAL's data set: an
-  // icosahedron (20 faces, all valence 5).
-  {
-    auto m = std::make_shared<Triangle_mesh<Exact_kernel::Point_3>>(convert<Exact_kernel::FT>(icosphere(0)));
-    benchmark::RegisterBenchmark("limit/bounds/exact", [m](benchmark::State& state) {
-      const Loop_error_bounds<Exact_kernel> eb(Loop_options{},
-                                               {.irregular_depth = 2, .regular_depth = 1, .universal_depth = 2});
-      std::size_t faces = 0;
-      for (auto _ : state) {
-        auto r = eb.compute(*m, 0);
-        faces = r.limit_mesh.faces.size();
-        benchmark::DoNotOptimize(r.basis_range.data());
-      }
-      state.SetItemsProcessed(state.iterations() * int64_t(faces));
-      state.counters["faces"] = double(faces);
-    })->Unit(benchmark::kMillisecond);
-  }
+  // Error bounds: in doubles, icosphere(2) at level 1; in GMP rationals, of the
+  // control mesh's own limit mesh (level 0) with the shallow depths of the
+  // stress run over CGAL's data set, an icosahedron (20 faces, all valence 5).
+  register_bounds<D>("limit/bounds/double", icosphere(2), {}, 1);
+  register_bounds<Exact_kernel>("limit/bounds/exact", convert<Exact_kernel::FT>(icosphere(0)),
+                                {.irregular_depth = 2, .regular_depth = 1, .universal_depth = 2}, 0);
 }
 
 class Throughput_reporter : public relgeo_bench::Collecting_reporter {

@@ -223,21 +223,23 @@ inline constexpr std::array standard_workload_makers_2{&uniform_2, &near_colline
 inline constexpr std::array standard_workload_makers_3{&uniform_3, &near_coplanar_3, &extreme_magnitudes_3,
                                                        &degenerate_3};
 
-/// The standard orientation_2 workloads with n cases each (grids excluded).
-inline std::vector<Workload<Orientation_2_case>> standard_workloads_2(std::size_t n,
-                                                                      std::uint64_t seed = 1) {
-  std::vector<Workload<Orientation_2_case>> r;
-  for (std::size_t k = 0; k < standard_workload_makers_2.size(); ++k)
-    r.push_back(standard_workload_makers_2[k](n, seed + k));
+namespace internal {
+template <class Case, std::size_t N>
+std::vector<Workload<Case>> make_workloads(const std::array<Workload<Case> (*)(std::size_t, std::uint64_t), N>& makers,
+                                           std::size_t n, std::uint64_t seed) {
+  std::vector<Workload<Case>> r;
+  for (std::size_t k = 0; k < N; ++k) r.push_back(makers[k](n, seed + k));
   return r;
 }
+}  // namespace internal
+
+/// The standard orientation_2 workloads with n cases each (grids excluded).
+inline std::vector<Workload<Orientation_2_case>> standard_workloads_2(std::size_t n, std::uint64_t seed = 1) {
+  return internal::make_workloads(standard_workload_makers_2, n, seed);
+}
 /// The standard orientation_3 workloads with n cases each.
-inline std::vector<Workload<Orientation_3_case>> standard_workloads_3(std::size_t n,
-                                                                      std::uint64_t seed = 11) {
-  std::vector<Workload<Orientation_3_case>> r;
-  for (std::size_t k = 0; k < standard_workload_makers_3.size(); ++k)
-    r.push_back(standard_workload_makers_3[k](n, seed + k));
-  return r;
+inline std::vector<Workload<Orientation_3_case>> standard_workloads_3(std::size_t n, std::uint64_t seed = 11) {
+  return internal::make_workloads(standard_workload_makers_3, n, seed);
 }
 
 }  // namespace relgeo::analysis

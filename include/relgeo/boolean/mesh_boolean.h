@@ -58,7 +58,9 @@
 #include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/mesh/face_bvh.h"
 #include "relgeo/mesh/mesh_topology.h"
+#include "relgeo/mesh/rounding_repair.h"
 #include "relgeo/mesh/self_intersection.h"
+#include "relgeo/mesh/solid_validation.h"
 #include "relgeo/mesh/validity.h"
 
 namespace relgeo {

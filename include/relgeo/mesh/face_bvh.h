@@ -61,6 +61,7 @@
 #include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/point.h"
 #include "relgeo/kernel/point_access.h"
+#include "relgeo/mesh/face_pair.h"
 #include "relgeo/mesh/internal/parallel.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/triangle_mesh.h"
@@ -99,13 +100,6 @@ bool closed_boxes_overlap(const BoxA& a, const BoxB& b) {
 
 /// Whether two closed boxes share a point (touching counts).
 inline bool do_overlap(const Box_3& a, const Box_3& b) { return detail::closed_boxes_overlap(a, b); }
-
-/// Two face indices (of two meshes, or of one mesh with first < second).
-struct Face_pair {
-  Index first = 0, second = 0;
-  friend constexpr bool operator==(const Face_pair&, const Face_pair&) = default;
-  friend constexpr auto operator<=>(const Face_pair&, const Face_pair&) = default;
-};
 
 /// \brief The box of every face: the smallest box of doubles containing its
 /// three corners (lower_double / upper_double of each coordinate, so exact

@@ -64,10 +64,16 @@ void combine_rows(const int (&table)[Rows][12], const FT* net, std::size_t dim, 
   }
 }
 
+/// The scratch net_ranges_by_rows needs: 12 x dim values per level of
+/// refinement, then 15 x dim for the Bezier coefficients.
+inline std::size_t net_ranges_scratch_size(std::size_t dim, unsigned depth) {
+  return (12 * std::size_t(depth) + 15) * dim;
+}
+
 /// The recursion of regular_net_ranges a row at a time: each refinement and
 /// each Bezier coefficient computed for every dim at once, with the buffers
-/// of every level allocated once (`scratch`: 12 x dim per level, then 15 x
-/// dim). For each dim, the same operations in the same order as one value at
+/// of every level allocated once (`scratch`: net_ranges_scratch_size
+/// values). For each dim, the same operations in the same order as one value at
 /// a time, and the values compared in the same order. (One value at a time
 /// took half the time of the failsafe bounds of the stress run over CGAL's
 /// data set.)
@@ -114,7 +120,7 @@ inline void rational_net_ranges(const std::vector<mpq_class>& net, std::size_t d
   std::vector<mpz_class> ilo(dim), ihi(dim);
   std::vector<bool> ihave(dim, false);
   const mpz_class one = 1;
-  std::vector<mpz_class> scratch((12 * std::size_t(depth) + 15) * dim);
+  std::vector<mpz_class> scratch(net_ranges_scratch_size(dim, depth));
   net_ranges_by_rows(numerators.data(), dim, depth, one, one, scratch.data(), ilo, ihi, ihave);
   mpz_class denominator = w * 24;
   denominator <<= 4 * depth;
@@ -136,7 +142,7 @@ void regular_net_ranges(const std::vector<FT>& net, std::size_t dim, unsigned de
   if constexpr (std::is_same_v<FT, mpq_class>) {
     rational_net_ranges(net, dim, depth, lo, hi, have);
   } else {
-    std::vector<FT> scratch((12 * std::size_t(depth) + 15) * dim);
+    std::vector<FT> scratch(net_ranges_scratch_size(dim, depth));
     net_ranges_by_rows(net.data(), dim, depth, one_24, one_16, scratch.data(), lo, hi, have);
   }
 }

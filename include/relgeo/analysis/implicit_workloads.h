@@ -317,6 +317,65 @@ inline Implicit_workload tpi_point_family(std::size_t cases, std::uint64_t seed)
   return b.take();
 }
 
+/// Points on axis-aligned planes and lines (the faces and edges of CAD
+/// parts), where coordinates agree exactly: line pq (random) meets two
+/// different planes axis = c, so L1 and L3 are one point from two
+/// constructions; line p2q2 shares coordinate `axis` (c, c a few ulps off,
+/// or -c when c = 0) and, in half the cases, a second one; T has one plane
+/// axis = c. c is a random coordinate, a subnormal (distinct subnormals are
+/// equal to a caller who set denormals-are-zero) or zero.
+inline Implicit_workload axis_aligned_family(std::size_t cases, std::uint64_t seed) {
+  Implicit_builder b("axis-aligned", seed);
+  std::mt19937_64& g = b.rng();
+  while (b.cases() < cases) {
+    const int axis = small_int(g, 0, 2), other = (axis + small_int(g, 1, 2)) % 3;
+    const int kind = small_int(g, 0, 3);
+    const double c = kind == 0   ? std::ldexp(static_cast<double>(small_int(g, 1, 7)), -1074)
+                     : kind == 1 ? 0.0
+                                 : uniform(g, -1, 1);
+    const auto on_plane = [&](double value, int a) {
+      Vec v = b.random_point();
+      v[a] = value;
+      return v;
+    };
+    const double c2 = kind == 1 && (g() & 1) ? -c : (g() & 1) ? c : moved_by_ulps(c, nonzero_ulps(g));
+    const Vec p = b.random_point(), q = b.random_point();
+    const Vec r = on_plane(c, axis), s = on_plane(c, axis), t = on_plane(c, axis);
+    const Vec r3 = on_plane(c, axis), s3 = on_plane(c, axis), t3 = on_plane(c, axis);
+    Vec p2 = on_plane(c2, axis), q2 = on_plane(c2, axis);
+    if (g() & 1) q2[other] = p2[other];  // a line parallel to the third axis
+    const std::uint32_t L1 = b.add_lpi(p, q, r, s, t), L3 = b.add_lpi(p, q, r3, s3, t3);
+    const std::uint32_t L2 = b.add_lpi(p2, q2, b.random_point(), b.random_point(), b.random_point());
+    const std::uint32_t L4 = b.add_lpi(p2, q2, b.random_point(), b.random_point(), b.random_point());
+    std::array<Vec, 9> planes;
+    for (auto& v : planes) v = b.random_point();
+    const int aligned = small_int(g, 0, 2);
+    for (int i = 0; i < 3; ++i) planes[3 * aligned + i][axis] = c;
+    const std::uint32_t T = b.add_tpi(planes);
+    Vec near = nearest_lpi(p, q, r, s, t);
+    near[axis] = c;
+    if (g() & 1) near = moved(near, other, nonzero_ulps(g));
+    const std::uint32_t N = b.add_explicit(near), R = b.add_explicit(r), S = b.add_explicit(s), T3 = b.add_explicit(t3),
+                        P2 = b.add_explicit(p2);
+    // Seven compares and three of each orientation per round, so that every
+    // tenth case (the floating-point environment test) meets each kind.
+    b.compare(L1, L3);  // zero: one point
+    b.compare(L1, L2);  // equal in `axis` when c2 = c
+    b.compare(L2, L4);  // equal in `axis` (and `other`): the order along the line
+    b.compare(L1, N);   // equal in `axis`, an ulp apart or equal in the others
+    b.compare(T, L1);
+    b.compare(L2, P2);
+    b.compare(L3, L2);
+    b.orientation_3(R, S, T3, L1);   // zero: on the plane axis = c
+    b.orientation_3(L1, L3, R, S);   // zero: two equal points
+    b.orientation_3(L2, L4, P2, N);  // zero: three points of one line
+    b.orientation_2(L1, L3, P2);     // zero: two equal points
+    b.orientation_2(L2, L4, P2);     // zero: one line
+    b.orientation_2(L1, L2, N);
+  }
+  return b.take();
+}
+
 /// Each coordinate a small multiple of a subnormal power of two, or
 /// 1 + k 2^-52. An eighth of the cases: exact arithmetic on 2^-1074 scales is
 /// about 20x slower than on the others (the oracle, GMP, Epeck).
@@ -350,6 +409,7 @@ inline std::vector<Implicit_workload> implicit_workloads(std::size_t cases, std:
     out.push_back(random_family("magnitudes 2^" + std::to_string(exponents[i]), std::ldexp(1.0, exponents[i]),
                                 seed + 10 + i, cases));
   out.push_back(subnormal_family(cases, seed + 20));
+  out.push_back(axis_aligned_family(cases / 2, seed + 21));
   return out;
 }
 

@@ -67,6 +67,54 @@ struct Staged_implicit_point {
   }
 };
 
+/// A coordinate of p that its construction makes exactly one of its
+/// defining doubles: every coordinate of an explicit point; coordinate
+/// `axis` of an LPI point when the line's two points share it (so does the
+/// whole line) or the plane's three do (the plane is axis = c); of a TPI
+/// point when one plane's three points share it. A built LPI or TPI point
+/// has W != 0, so its line and planes are proper ones. These coordinates are
+/// where the filters fail most: on parts with axis-aligned faces and edges
+/// (CAD models), the points of one face or edge agree in them, and proving
+/// two coordinates equal takes the exact stages. Call it in the default
+/// floating-point environment (under DAZ, distinct subnormals compare equal).
+inline std::optional<double> exact_coordinate(const Staged_implicit_point& p, int axis) {
+  const auto shared = [axis](const Point_3<double>* v, int count) -> std::optional<double> {
+    const auto c = [axis](const Point_3<double>& q) { return axis == 0 ? q.x : (axis == 1 ? q.y : q.z); };
+    for (int i = 1; i < count; ++i)
+      if (!(c(v[i]) == c(v[0]))) return std::nullopt;
+    return c(v[0]);
+  };
+  switch (p.kind) {
+    case Implicit_point_kind::explicit_point:
+      return p.filter[axis].value;
+    case Implicit_point_kind::lpi: {
+      const Point_3<double>* v = p.defining->data();
+      if (const auto on_line = shared(v, 2)) return on_line;
+      return shared(v + 2, 3);
+    }
+    default: {
+      const Point_3<double>* v = p.defining->data();
+      for (int plane = 0; plane < 3; ++plane)
+        if (const auto on_plane = shared(v + 3 * plane, 3)) return on_plane;
+      return std::nullopt;
+    }
+  }
+}
+
+/// Whether the points' coordinates `axis` are all known exactly
+/// (exact_coordinate) and equal: the points lie on one plane axis = c. In
+/// the default floating-point environment.
+template <std::size_t N>
+bool share_exact_coordinate(const std::array<const Staged_implicit_point*, N>& points, int axis) {
+  const std::optional<double> first = exact_coordinate(*points[0], axis);
+  if (!first) return false;
+  for (std::size_t i = 1; i < N; ++i) {
+    const std::optional<double> c = exact_coordinate(*points[i], axis);
+    if (!c || !(*c == *first)) return false;
+  }
+  return true;
+}
+
 /// Degree in the input coordinates of a point's homogeneous coordinates
 /// (X, Y, Z; W has one less).
 constexpr int homogeneous_degree(Implicit_point_kind kind) {
@@ -142,15 +190,19 @@ auto implicit_formula(const std::array<const Staged_implicit_point*, N>& points,
 }
 
 /// Runs a predicate `sign(array of homogeneous pointers)` through the
-/// stages on the points given.
+/// stages on the points given. When the first stage cannot decide,
+/// `known_zero()` (in the default environment) may prove the sign zero from
+/// how the points were built, before the exact stages.
 ///
 /// A point with a NaN or an infinity among its defining doubles (only an
 /// explicit point can hold one) gives `uncertain`, before any stage: the
 /// later stages would decode the bits of a NaN or an infinity as a finite
 /// number, and the first would answer where the bad coordinate is not read
 /// (a projection dropping it, a comparison decided before it).
-template <std::size_t N, class Sign>
-Certified_sign staged_sign(const std::array<const Staged_implicit_point*, N>& points, const Sign& sign) {
+template <std::size_t N, class Sign, class Known_zero = bool (*)()>
+Certified_sign staged_sign(
+    const std::array<const Staged_implicit_point*, N>& points, const Sign& sign,
+    const Known_zero& known_zero = [] { return false; }) {
   std::array<const Homogeneous_3<Filtered_value<double>>*, N> filters;
   bool finite = true;
   for (std::size_t i = 0; i < N; ++i) filters[i] = &points[i]->filter, finite = finite & points[i]->finite;
@@ -160,6 +212,7 @@ Certified_sign staged_sign(const std::array<const Staged_implicit_point*, N>& po
   if (is_certain(first)) [[likely]]
     return first;
   return call_in_default_fp_environment([&] {
+    if (known_zero()) return Certified_sign::zero;
     const Defining_doubles<N> inputs(points);
     return filtered_exact_sign(inputs.values(), inputs.degree(), inputs.expansions_worthwhile(),
                                implicit_formula(points, sign))
@@ -184,10 +237,16 @@ struct Staged_implicit_policy {
   }
   static std::optional<Point> tpi(const std::array<Explicit, 9>& v) { return built(Implicit_point_kind::tpi, v); }
 
+  /// Zero without the exact stages when the four points share an exactly
+  /// known coordinate (one plane axis = c: a face of an axis-aligned part).
   static Certified_sign orientation_3(const Point& a, const Point& b, const Point& c, const Point& d) {
-    return staged_sign(std::array<const Point*, 4>{&a, &b, &c, &d}, [](const auto& h) {
-      return orientation_3_sign(h);
-    });
+    const std::array<const Point*, 4> points{&a, &b, &c, &d};
+    return staged_sign(
+        points, [](const auto& h) { return orientation_3_sign(h); },
+        [&points] {
+          return share_exact_coordinate(points, 0) || share_exact_coordinate(points, 1) ||
+                 share_exact_coordinate(points, 2);
+        });
   }
   /// orientation_3 of explicit a, b, c and any d (the common query: a point
   /// against an input triangle's plane) without building a, b, c first.
@@ -201,14 +260,30 @@ struct Staged_implicit_policy {
       return first;
     return orientation_3(make(a), make(b), make(c), d);
   }
+  /// Zero without the exact stages when the three points share an exactly
+  /// known coordinate that the projection keeps (one line in it).
   static Certified_sign orientation_2(const Point& a, const Point& b, const Point& c, int axis) {
-    return staged_sign(std::array<const Point*, 3>{&a, &b, &c}, [axis](const auto& h) {
-      return orientation_2_sign(h, axis);
-    });
+    const std::array<const Point*, 3> points{&a, &b, &c};
+    return staged_sign(
+        points, [axis](const auto& h) { return orientation_2_sign(h, axis); },
+        [&points, axis] {
+          return share_exact_coordinate(points, (axis + 1) % 3) || share_exact_coordinate(points, (axis + 2) % 3);
+        });
   }
+  /// The filter on all three coordinates; when it cannot decide, one
+  /// coordinate at a time (compare_coordinate).
   static Certified_sign compare_xyz(const Point& a, const Point& b) {
-    return staged_sign(std::array<const Point*, 2>{&a, &b}, [](const auto& h) {
-      return compare_xyz_sign(*h[0], *h[1]);
+    if (!(a.finite & b.finite)) [[unlikely]]
+      return Certified_sign::uncertain;
+    const Certified_sign first = in_default_fp_environment([&] { return compare_xyz_sign(a.filter, b.filter); });
+    if (is_certain(first)) [[likely]]
+      return first;
+    return call_in_default_fp_environment([&] {
+      for (int axis = 0; axis < 3; ++axis) {
+        const Certified_sign s = compare_coordinate(a, b, axis);
+        if (!certainly(s, Certified_sign::zero)) return s;
+      }
+      return Certified_sign::zero;
     });
   }
   /// The exact rational coordinates (GMP; the filters are not used).
@@ -260,6 +335,23 @@ struct Staged_implicit_policy {
   }
 
  private:
+  // One coordinate of a and b (finite points; in the default environment).
+  // Two coordinates known exactly (exact_coordinate) compare as doubles; a
+  // coordinate known on one side enters the stages as that of an explicit
+  // point, so their formula is of the other point's degree alone.
+  static Certified_sign compare_coordinate(const Point& a, const Point& b, int axis) {
+    const std::optional<double> known_a = exact_coordinate(a, axis), known_b = exact_coordinate(b, axis);
+    if (known_a && known_b)
+      return *known_a < *known_b   ? Certified_sign::negative
+             : *known_b < *known_a ? Certified_sign::positive
+                                   : Certified_sign::zero;
+    const auto stand_in = [axis](double c) {
+      return make({axis == 0 ? c : 0.0, axis == 1 ? c : 0.0, axis == 2 ? c : 0.0});
+    };
+    const Point ea = known_a ? stand_in(*known_a) : Point{}, eb = known_b ? stand_in(*known_b) : Point{};
+    return staged_sign(std::array<const Point*, 2>{known_a ? &ea : &a, known_b ? &eb : &b},
+                       [axis](const auto& h) { return compare_coordinate_sign(*h[0], *h[1], axis); });
+  }
   // An LPI point as p + (lambda / W) (q - p) in intervals. Its enclosure is
   // an ulp or two of the point wide when the step from p is short against
   // the coordinates (an edge of a mesh against its position), where the

@@ -637,7 +637,6 @@ class Boolean_engine {
     std::vector<Index> new_index(points_.size(), invalid_index);
     const Index inputs = points_.input_count();
     Index next_input = 0, next_new = 0;
-    const auto approximate = k_.approximate_point_3_object();
     const auto use = [&](Index g) {
       Index& n = new_index[g];
       if (n == invalid_index) {
@@ -647,7 +646,7 @@ class Boolean_engine {
           r.mesh.vertices[n] = mesh_[m]->vertices[g - offset_[m]];
         } else {
           n = r.first_new_vertex + next_new++;
-          const Approximate_point_3 a = approximate(points_[g]);
+          const Approximate_point_3& a = points_.approximation(g);
           r.mesh.vertices[n] = a.point;
           r.rounding_error = std::max(r.rounding_error, a.error);
           r.new_vertex_points.push_back(points_[g]);

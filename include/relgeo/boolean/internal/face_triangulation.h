@@ -70,17 +70,15 @@ struct Face_triangulation {
 };
 
 /// Points: the Boolean's points, K's implicit points by global index
-/// (points[i] for an Index i).
+/// (points[i] for an Index i) and their approximations
+/// (points.approximation(i), as K's approximate_point_3_object gives them).
 template <class K, class Points>
 class Face_triangulator {
  public:
   using IP = typename K::Implicit_point_3;
 
   Face_triangulator(const K& k, const Points& points)
-      : points_(points),
-        orient2_(k.implicit_orientation_2_object()),
-        compare_(k.compare_xyz_3_object()),
-        approximate_(k.approximate_point_3_object()) {}
+      : points_(points), orient2_(k.implicit_orientation_2_object()), compare_(k.compare_xyz_3_object()) {}
 
   /// Lawson's flips to a constrained Delaunay triangulation after the
   /// constraints (on by default; off gives the triangulation of insertion).
@@ -134,7 +132,7 @@ class Face_triangulator {
   int local(Index g) {
     const auto [it, added] = local_of_.try_emplace(g, static_cast<int>(global_.size()));
     if (added) {
-      const Approximate_point_3 a = approximate_(points_[g]);
+      const Approximate_point_3 a = points_.approximation(g);
       global_.push_back(g);
       box_.push_back(enclosure(a));
       plane_.push_back(in_frame(a.point));
@@ -411,7 +409,7 @@ class Face_triangulator {
   // scaled by a power of two get the same decisions).
   void set_frame(const std::array<Index, 3>& corners) {
     std::array<Point_3<double>, 3> c;
-    for (int i = 0; i < 3; ++i) c[i] = approximate_(points_[corners[i]]).point;
+    for (int i = 0; i < 3; ++i) c[i] = points_.approximation(corners[i]).point;
     std::array<double, 3> u{c[1].x - c[0].x, c[1].y - c[0].y, c[1].z - c[0].z};
     std::array<double, 3> w{c[2].x - c[0].x, c[2].y - c[0].y, c[2].z - c[0].z};
     int exponent = 0;
@@ -570,7 +568,6 @@ class Face_triangulator {
   const Points& points_;
   typename K::Implicit_orientation_2 orient2_;
   typename K::Compare_xyz_3 compare_;
-  decltype(std::declval<const K&>().approximate_point_3_object()) approximate_;
   bool delaunay_ = true;
   int axis_ = 2;
   Certified_sign sigma_ = Certified_sign::zero;

@@ -7,6 +7,12 @@
 // doubles (88 bytes under the filtered kernel, 44 MB for operands of 10^6
 // faces that no phase reads). Points are kept in fixed-size chunks, so a
 // reference to one stays valid while others are loaded or added.
+//
+// A point's approximation in doubles is kept too, once asked for: the
+// triangulation of each face a point lies on asks for it (an intersection
+// point on an edge lies on three faces), and so does the output, and a
+// certified kernel's approximation of a point of a sliver face can take
+// exact arithmetic (a quarter of a gear's Boolean, recomputed).
 #pragma once
 
 #include <array>
@@ -14,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "relgeo/kernel/implicit_point.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::internal {
@@ -28,6 +35,7 @@ class Point_table {
       : meshes_(meshes),
         point_(k.construct_point_3_object()),
         implicit_(k.construct_implicit_point_3_object()),
+        approximate_(k.approximate_point_3_object()),
         inputs_(meshes[0]->vertices.size() + meshes[1]->vertices.size()),
         slot_(inputs_, invalid_index) {}
 
@@ -42,6 +50,14 @@ class Point_table {
     const Index s = slot_[g];
     return s != invalid_index ? row(s) : load(g);
   }
+  /// K's approximation of point g (approximate_point_3_object), computed
+  /// on the first request and kept (not thread-safe either).
+  const Approximate_point_3& approximation(Index g) const {
+    const IP& p = (*this)[g];
+    Approximate_point_3& a = approximation_[slot_[g]];
+    if (a.error < 0) a = approximate_(p);
+    return a;
+  }
   /// Adds a point; its global index.
   Index add(IP p) {
     slot_.push_back(hold(std::move(p)));
@@ -50,6 +66,7 @@ class Point_table {
 
  private:
   static constexpr std::size_t chunk_size = 1024;
+  static constexpr double not_approximated = -1;  // an error no approximation has
 
   [[gnu::noinline]] const IP& load(Index g) const {
     const std::size_t in_a = meshes_[0]->vertices.size();
@@ -63,6 +80,7 @@ class Point_table {
       chunks_.back().reserve(chunk_size);  // never grown past: no reallocation moves a point
     }
     chunks_.back().push_back(std::move(p));
+    approximation_.push_back({{}, not_approximated});
     return static_cast<Index>(held_++);
   }
   const IP& row(Index s) const { return chunks_[s / chunk_size][s % chunk_size]; }
@@ -70,9 +88,11 @@ class Point_table {
   std::array<const Mesh*, 2> meshes_;
   decltype(std::declval<const K&>().construct_point_3_object()) point_;
   decltype(std::declval<const K&>().construct_implicit_point_3_object()) implicit_;
+  decltype(std::declval<const K&>().approximate_point_3_object()) approximate_;
   std::size_t inputs_;
   mutable std::vector<Index> slot_;  // global index -> held point (invalid_index: an input vertex not read yet)
   mutable std::vector<std::vector<IP>> chunks_;
+  mutable std::vector<Approximate_point_3> approximation_;  // by held point; error not_approximated: not yet
   mutable std::size_t held_ = 0;
 };
 

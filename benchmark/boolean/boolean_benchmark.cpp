@@ -2,15 +2,17 @@
 // corefinement (Epick, Epeck) on the same operands, in one run.
 //
 // Cases: two offset 20K-triangle spheres; CGAL's elephant against a rotated
-// copy; CGAL's armadillo against a 20K-triangle sphere; a 10^6-triangle pair
-// (two offset tori of 5 x 10^5 triangles each). Operations: union,
-// intersection, difference. Each subject runs `--relgeo_repetitions` times
-// (default 3); the table gives the minimum time, its ratio to the peer
-// (CGAL Epick for relgeo's double kernels, CGAL Epeck for Exact_kernel),
-// whether the output is a closed oriented manifold (checked after the timed
-// run, for every subject: the checks are not the subject's work), and,
-// measured once in a fresh process per subject, the peak memory above the
-// operands.
+// copy; CGAL's armadillo against a 20K-triangle sphere; three models of
+// CGAL's data set against moved copies (a rotor and fandisk, CAD parts, and
+// a gear); a 10^6-triangle pair (two offset tori of 5 x 10^5 triangles
+// each). Operations: union, intersection, difference. Each subject runs
+// `--relgeo_repetitions` times (default 3); the table gives the minimum
+// time, its ratio to the peer (CGAL Epick for relgeo's double kernels, CGAL
+// Epeck for Exact_kernel), whether the output is a closed oriented manifold
+// (checked after the timed run, for every subject: the checks are not the
+// subject's work), and, measured once in a fresh process per subject, the
+// peak memory above the operands. A second table gives relgeo's phase times
+// (Boolean_timing) in its fastest run.
 //
 // Flags (besides Google Benchmark's): --relgeo_large (also run Epeck and the
 // exact kernel on the 10^6 pair), --relgeo_memory=false, --relgeo_repetitions=N.
@@ -50,16 +52,17 @@ namespace {
 Mesh data_mesh(const char* name) {
   return relgeo::read_mesh(std::string(RELGEO_CGAL_MESH_DIR) + "/" + name);
 }
+// The box of m's vertices: lower corner, then upper corner.
+std::array<double, 6> box(const Mesh& m) {
+  std::array<double, 6> b{1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
+  for (const auto& p : m.vertices) {
+    const double c[3] = {p.x, p.y, p.z};
+    for (int i = 0; i < 3; ++i) b[i] = std::min(b[i], c[i]), b[3 + i] = std::max(b[3 + i], c[i]);
+  }
+  return b;
+}
 // m scaled to fit the box of `like` and moved by `shift` (in units of its size).
 Mesh fitted(const Mesh& m, const Mesh& like, double shift) {
-  const auto box = [](const Mesh& x) {
-    std::array<double, 6> b{1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
-    for (const auto& p : x.vertices) {
-      const double c[3] = {p.x, p.y, p.z};
-      for (int i = 0; i < 3; ++i) b[i] = std::min(b[i], c[i]), b[3 + i] = std::max(b[3 + i], c[i]);
-    }
-    return b;
-  };
   const auto bm = box(m), bl = box(like);
   const double sm = std::max({bm[3] - bm[0], bm[4] - bm[1], bm[5] - bm[2]});
   const double sl = std::max({bl[3] - bl[0], bl[4] - bl[1], bl[5] - bl[2]});
@@ -70,6 +73,15 @@ Mesh fitted(const Mesh& m, const Mesh& like, double shift) {
     p.z = (p.z - (bm[2] + bm[5]) / 2) * sl / sm * 0.6 + (bl[2] + bl[5]) / 2;
   }
   return r;
+}
+// A model of CGAL's data set against a copy rotated by 0.5 rad about z,
+// tilted by 0.3 and moved by a tenth of its size: the operands of
+// BooleanCgalOracle.CgalDataSetAgainstMovedCopies.
+std::pair<Mesh, Mesh> against_moved_copy(const char* name) {
+  const Mesh m = data_mesh(name);
+  const auto b = box(m);
+  const double size = std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
+  return {m, relgeo::rigidly_moved(m, 0.5, 0.3, {0.1 * size, 0.05 * size, 0.02 * size})};
 }
 
 }  // namespace
@@ -86,6 +98,12 @@ const std::vector<Boolean_case>& boolean_cases() {
          const Mesh a = data_mesh("armadillo.off");
          return std::pair{a, fitted(icosphere(5), a, 0.1)};
        }, false},
+      // Parts with axis-aligned faces and edges, and a gear with slivers:
+      // where the narrow phase met exactly equal coordinates (doc/boolean.md,
+      // "Where the time goes").
+      {"rotor-moved", [] { return against_moved_copy("rotor_small.off"); }, false},
+      {"fandisk-moved", [] { return against_moved_copy("fandisk.off"); }, false},
+      {"pinion-moved", [] { return against_moved_copy("pinion.off"); }, false},
       {"tori-1M", [] { return std::pair{torus(1, 0.4, 500, 500), torus(1, 0.4, 500, 500, {0.3, 0.2, 0.1})}; }, true},
   };
   return cases;
@@ -121,7 +139,9 @@ Timed_run relgeo_run(const Mesh& a, const Mesh& b, relgeo::Boolean_operation op,
          .delaunay_retriangulation = !before_issue_28,
          .validate_output = validate,
          .threads = threads}));
-    return [r] { return Run_outcome{r->mesh.faces.size(), r->ok() && closed_oriented_manifold(r->mesh), volume(r->mesh)}; };
+    return [r] {
+      return Run_outcome{r->mesh.faces.size(), r->ok() && closed_oriented_manifold(r->mesh), volume(r->mesh), r->time};
+    };
   };
 }
 
@@ -272,6 +292,16 @@ void print_table() {
     else if (f.peak_mb) std::snprintf(peak, sizeof peak, "%.1f", *f.peak_mb);
     std::printf("%-18s %-13s %-36s %10.1f %8.3f %6s %9zu %8s\n", k.c.c_str(), k.op.c_str(), k.subject.c_str(),
                 1e3 * f.seconds, ratio, f.outcome.valid ? "yes" : "NO", f.outcome.faces, peak);
+  }
+  // Where relgeo's time went, in its fastest run (Boolean_timing).
+  std::printf("\n%-18s %-13s %-36s %7s %7s %7s %7s %7s %7s %7s %7s\n", "case", "operation", "subject (phases, ms)",
+              "check", "broad", "narrow", "retri", "label", "assembl", "round", "valid");
+  for (const auto& [k, f] : figures) {
+    if (!f.outcome.phases) continue;
+    const relgeo::Boolean_timing& t = *f.outcome.phases;
+    std::printf("%-18s %-13s %-36s %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f\n", k.c.c_str(), k.op.c_str(),
+                k.subject.c_str(), 1e3 * t.check, 1e3 * t.broad_phase, 1e3 * t.narrow_phase, 1e3 * t.retriangulation,
+                1e3 * t.labelling, 1e3 * t.assembly, 1e3 * t.rounding, 1e3 * t.validation);
   }
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,7 @@ struct Run_outcome {
   std::size_t faces = 0;
   bool valid = false;
   double volume = 0;
+  std::optional<relgeo::Boolean_timing> phases;  ///< relgeo's phase times (none for CGAL's subjects)
 };
 
 /// The timed run of a subject: the Boolean alone. It returns how to inspect

@@ -38,7 +38,9 @@ Timed_run relgeo_on_epeck(const Mesh& a, const Mesh& b, relgeo::Boolean_operatio
   return [&a, &b, op]() -> Inspect {
     auto r = std::make_shared<relgeo::Boolean_result<relgeo::Cgal_kernel<CGAL::Epeck>>>(
         relgeo::boolean(a, b, op, relgeo::Cgal_kernel<CGAL::Epeck>{}, {.validate_output = false}));
-    return [r] { return Run_outcome{r->mesh.faces.size(), r->ok() && closed_oriented_manifold(r->mesh), volume(r->mesh)}; };
+    return [r] {
+      return Run_outcome{r->mesh.faces.size(), r->ok() && closed_oriented_manifold(r->mesh), volume(r->mesh), r->time};
+    };
   };
 }
 

@@ -400,6 +400,17 @@ TEST(MeshBooleanThreads, TheResultDoesNotDependOnTheThreadCount) {
     EXPECT_TRUE(std::ranges::equal(serial.mesh.tags.creases(), parallel.mesh.tags.creases())) << to_string(op);
     EXPECT_EQ(serial.counts.candidate_pairs, parallel.counts.candidate_pairs) << to_string(op);
   }
+  // A sphere against a copy turned by a few hundredths of a radian: the two
+  // surfaces nearly coincide, so the narrow phase has several of its blocks
+  // of pairs (16384), each split between the threads.
+  const Mesh turned = rigidly_moved(a, 0.05, 0.03, {0.002, 0.001, 0});
+  const auto serial = boolean(a, turned, Op::union_of);
+  const auto parallel = boolean(a, turned, Op::union_of, Filtered_exact_kernel{}, Boolean_options{.threads = 2});
+  ASSERT_TRUE(serial.ok() && parallel.ok());
+  EXPECT_GT(serial.counts.candidate_pairs, 2u * 16384);
+  EXPECT_EQ(serial.mesh.faces, parallel.mesh.faces);
+  EXPECT_EQ(serial.mesh.vertices, parallel.mesh.vertices);
+  EXPECT_EQ(serial.counts.intersecting_pairs, parallel.counts.intersecting_pairs);
   Mesh crossing = a;
   const auto v0 = crossing.vertices[0];
   crossing.vertices[0] = {-1.5 * v0.x, -1.5 * v0.y, -1.5 * v0.z};  // pulled through the far side

@@ -197,39 +197,49 @@ class Boolean_engine {
     Triangle_location where[2];
   };
 
+  // One pair's intersection when it is not disjoint (or a face is degenerate).
+  struct Met_pair {
+    std::size_t pair;
+    Triangle_intersection<K> x;
+    bool degenerate_input;
+  };
+
   bool narrow_phase(const std::vector<Face_pair>& pairs, Result& r) {
     // No fail-safe perturbation (thesis eq. 5.3) here: a vertex moved for one
     // pair and not for the others would make an arrangement of no operand at
     // all (doc/boolean.md, "The kernels").
-    internal::Triangle_intersector<K> intersector(k_, {.perturb_ambiguous_vertices = false});
-    for (const auto& [fa, fb] : pairs) {
-      const Triangle_intersection<K> x = intersector.run(triangle(*mesh_[0], fa), triangle(*mesh_[1], fb));
-      if (intersector.degenerate_input()) {
-        // A valid face that the kernel's arithmetic finds degenerate (a naive
-        // kernel's products underflow or overflow; the exact operand check
-        // passed), or a degenerate face of an unchecked operand.
-        r.failure = "narrow phase: face " + std::to_string(fa) + " of A or face " + std::to_string(fb) +
-                    " of B is degenerate in the kernel's arithmetic (intersect_triangles: a degenerate triangle)";
-        return false;
+    const Triangle_intersection_options no_perturbation{.perturb_ambiguous_vertices = false};
+    if (internal::thread_count(options_.threads) <= 1) {
+      internal::Triangle_intersector<K> intersector(k_, no_perturbation);
+      for (const Face_pair& pair : pairs) {
+        const Triangle_intersection<K> x =
+            intersector.run(triangle(*mesh_[0], pair.first), triangle(*mesh_[1], pair.second));
+        if (!register_intersection(pair, x, intersector.degenerate_input(), r)) return false;
       }
-      if (x.kind == Triangle_intersection_kind::undecided) {
-        r.undecided_pairs.emplace_back(fa, fb);
-        continue;
+    } else {
+      // Each pair's intersection is a function of its two triangles alone:
+      // the pairs of a block are intersected in parts of a fixed size on the
+      // threads, then registered in pair order, as above, so the points'
+      // numbering does not depend on the thread count. A block bounds what is
+      // held at once (an intersection takes about a kilobyte).
+      constexpr std::size_t block = 16384, part = 512;
+      std::vector<std::vector<Met_pair>> met;
+      for (std::size_t begin = 0; begin < pairs.size(); begin += block) {
+        const std::size_t end = std::min(pairs.size(), begin + block);
+        met.assign((end - begin + part - 1) / part, {});
+        internal::parallel_for_each_index(met.size(), options_.threads, [&](std::size_t i) {
+          internal::Triangle_intersector<K> intersector(k_, no_perturbation);
+          for (std::size_t j = begin + i * part; j < std::min(end, begin + (i + 1) * part); ++j) {
+            Triangle_intersection<K> x =
+                intersector.run(triangle(*mesh_[0], pairs[j].first), triangle(*mesh_[1], pairs[j].second));
+            if (intersector.degenerate_input() || x.kind != Triangle_intersection_kind::disjoint)
+              met[i].push_back({j, std::move(x), intersector.degenerate_input()});
+          }
+        });
+        for (const auto& in_part : met)
+          for (const Met_pair& m : in_part)
+            if (!register_intersection(pairs[m.pair], m.x, m.degenerate_input, r)) return false;
       }
-      if (x.kind == Triangle_intersection_kind::disjoint) continue;
-      ++r.counts.intersecting_pairs;
-      if (x.kind == Triangle_intersection_kind::coplanar_overlap) {
-        ++r.counts.coplanar_pairs;
-        coplanar_[0][fa].push_back(fb);
-        coplanar_[1][fb].push_back(fa);
-      }
-      std::array<Index, 6> ids{};
-      for (std::size_t i = 0; i < x.points.size(); ++i) ids[i] = register_point(x.points[i], fa, fb, x.locations[i]);
-      // Curve segments: a segment, or the boundary of a coplanar polygon.
-      const std::size_t n = x.points.size();
-      if (n == 2) segments_.push_back({ids[0], ids[1], fa, fb});
-      if (n >= 3)
-        for (std::size_t i = 0; i < n; ++i) segments_.push_back({ids[i], ids[(i + 1) % n], fa, fb});
     }
     if (!r.undecided_pairs.empty()) {
       r.failure = "narrow phase: " + std::to_string(r.undecided_pairs.size()) +
@@ -242,6 +252,40 @@ class Boolean_engine {
     }
     for (Index p = points_.input_count(); p < points_.size(); ++p)
       r.counts.new_vertices += find(p) == p;
+    return true;
+  }
+
+  // The points and curve segments of one pair's intersection x; false (with
+  // r.failure) for a face the kernel finds degenerate.
+  bool register_intersection(const Face_pair& pair, const Triangle_intersection<K>& x, bool degenerate_input,
+                             Result& r) {
+    const auto [fa, fb] = pair;
+    if (degenerate_input) {
+      // A valid face that the kernel's arithmetic finds degenerate (a naive
+      // kernel's products underflow or overflow; the exact operand check
+      // passed), or a degenerate face of an unchecked operand.
+      r.failure = "narrow phase: face " + std::to_string(fa) + " of A or face " + std::to_string(fb) +
+                  " of B is degenerate in the kernel's arithmetic (intersect_triangles: a degenerate triangle)";
+      return false;
+    }
+    if (x.kind == Triangle_intersection_kind::undecided) {
+      r.undecided_pairs.emplace_back(fa, fb);
+      return true;
+    }
+    if (x.kind == Triangle_intersection_kind::disjoint) return true;
+    ++r.counts.intersecting_pairs;
+    if (x.kind == Triangle_intersection_kind::coplanar_overlap) {
+      ++r.counts.coplanar_pairs;
+      coplanar_[0][fa].push_back(fb);
+      coplanar_[1][fb].push_back(fa);
+    }
+    std::array<Index, 6> ids{};
+    for (std::size_t i = 0; i < x.points.size(); ++i) ids[i] = register_point(x.points[i], fa, fb, x.locations[i]);
+    // Curve segments: a segment, or the boundary of a coplanar polygon.
+    const std::size_t n = x.points.size();
+    if (n == 2) segments_.push_back({ids[0], ids[1], fa, fb});
+    if (n >= 3)
+      for (std::size_t i = 0; i < n; ++i) segments_.push_back({ids[i], ids[(i + 1) % n], fa, fb});
     return true;
   }
 

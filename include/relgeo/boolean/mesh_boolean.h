@@ -210,6 +210,8 @@ class Boolean_engine {
     // all (doc/boolean.md, "The kernels").
     const Triangle_intersection_options no_perturbation{.perturb_ambiguous_vertices = false};
     if (internal::thread_count(options_.threads) <= 1) {
+      // Each pair registered as soon as it is intersected (holding the
+      // intersections, as the threads must, cost a tenth of the phase).
       internal::Triangle_intersector<K> intersector(k_, no_perturbation);
       for (const Face_pair& pair : pairs) {
         const Triangle_intersection<K> x =

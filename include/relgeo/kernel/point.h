@@ -19,4 +19,10 @@ struct Point_3 {
   friend bool operator==(const Point_3&, const Point_3&) = default;
 };
 
+/// Coordinate `axis` of p (0: x, 1: y, 2: z).
+template <class FT>
+const FT& coordinate(const Point_3<FT>& p, int axis) {
+  return axis == 0 ? p.x : (axis == 1 ? p.y : p.z);
+}
+
 }  // namespace relgeo

@@ -298,7 +298,6 @@ class Rounding_repair {
     r.largest_change = std::max(r.largest_change, distance(best_position, h));
     for (Index f : s) make_dirty(f);
   }
-  static double coordinate(const Point_3<double>& p, int i) { return i == 0 ? p.x : i == 1 ? p.y : p.z; }
 
   static double distance(const Point_3<double>& a, const Point_3<double>& b) {
     return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z);

@@ -79,10 +79,9 @@ struct Staged_implicit_point {
 /// floating-point environment (under DAZ, distinct subnormals compare equal).
 inline std::optional<double> exact_coordinate(const Staged_implicit_point& p, int axis) {
   const auto shared = [axis](const Point_3<double>* v, int count) -> std::optional<double> {
-    const auto c = [axis](const Point_3<double>& q) { return axis == 0 ? q.x : (axis == 1 ? q.y : q.z); };
     for (int i = 1; i < count; ++i)
-      if (!(c(v[i]) == c(v[0]))) return std::nullopt;
-    return c(v[0]);
+      if (!(coordinate(v[i], axis) == coordinate(v[0], axis))) return std::nullopt;
+    return coordinate(v[0], axis);
   };
   switch (p.kind) {
     case Implicit_point_kind::explicit_point:

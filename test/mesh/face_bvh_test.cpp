@@ -1,17 +1,18 @@
 // Face_bvh: pairs and queries against brute force (exact rational slab test
 // for segments and rays), thread-count independence, bad input.
-#include <gtest/gtest.h>
+#include "relgeo/mesh/face_bvh.h"
 
 #include <gmpxx.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <set>
 
 #include "mesh/solid_fixtures.h"
 #include "relgeo/core/dyadic.h"
-#include "relgeo/mesh/face_bvh.h"
 
 namespace {
 
@@ -68,6 +69,43 @@ TEST(FaceBvh, CrossAndSelfPairsAreExactlyTheOverlappingBoxes) {
       ta.for_each_overlapping_pair(tb, [&](Index, Index) { ++calls; });
       EXPECT_EQ(calls, brute_pairs(a, b).size());
     }
+}
+
+// Groups leave out the pairs within one nonzero group and nothing else:
+// spatially coherent groups (whole nodes pruned, group 0 among them) and
+// scattered ones (pruned pair by pair), on one and two threads.
+TEST(FaceBvh, PairsBetweenGroupsAreThoseOfDifferentOrNoGroups) {
+  const auto boxes = random_boxes(3000, 21, 1.0, 0.06);
+  const Face_bvh t(boxes);
+  const auto pairs_between = [&](const std::vector<std::uint16_t>& group, int threads) {
+    std::size_t calls = 0;
+    const auto pairs = t.collect_overlapping_pairs_between_groups<Face_pair>(
+        group,
+        [](Index a, Index b, std::vector<Face_pair>& out) {
+          out.push_back({a, b});
+        },
+        threads, &calls);
+    EXPECT_EQ(calls, pairs.size());
+    return pairs;
+  };
+  std::mt19937_64 g(5);
+  std::vector<std::uint16_t> by_region(boxes.size()), scattered(boxes.size());
+  for (Index f = 0; f < boxes.size(); ++f) {
+    by_region[f] = static_cast<std::uint16_t>(boxes[f].lo[0] < -0.5 ? 0 : boxes[f].lo[0] < 0.3 ? 1 : 2);
+    scattered[f] = static_cast<std::uint16_t>(g() % 4);
+  }
+  for (const auto& group : {by_region, scattered}) {
+    std::vector<Face_pair> expected;
+    for (const Face_pair& p : brute_self_pairs(boxes))
+      if (group[p.first] == 0 || group[p.first] != group[p.second]) expected.push_back(p);
+    const auto serial = pairs_between(group, 1);
+    EXPECT_EQ(sorted(serial), expected);
+    EXPECT_EQ(serial, pairs_between(group, 2));  // same pairs in the same order
+    EXPECT_LT(expected.size(), brute_self_pairs(boxes).size());
+  }
+  EXPECT_EQ(sorted(pairs_between(std::vector<std::uint16_t>(boxes.size(), 0), 1)), brute_self_pairs(boxes));
+  EXPECT_TRUE(pairs_between(std::vector<std::uint16_t>(boxes.size(), 7), 1).empty());
+  EXPECT_THROW((void)pairs_between(std::vector<std::uint16_t>(5, 1), 1), Precondition_violation);
 }
 
 TEST(FaceBvh, TouchingBoxesOverlapAndEqualCentresDoNotBreakTheSplit) {

@@ -1,16 +1,19 @@
 // Self-intersection with exact predicates and check_solid.
+#include "relgeo/mesh/self_intersection.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
 #include <vector>
 
 #include "mesh/mesh_fixtures.h"
-#include "relgeo/mesh/self_intersection.h"
 #include "relgeo/mesh/internal/embedded_stars.h"
+#include "relgeo/mesh/internal/projected_patches.h"
 
 namespace {
 
@@ -146,6 +149,112 @@ TEST(EmbeddedStars, CheckSolidFindsThePairwiseTestsPairs) {
     EXPECT_EQ(reported, pairwise) << "trial " << trial;
   }
   EXPECT_GT(crossing_at_apex, 0);  // the hard case occurred
+}
+
+// ---- the projected-patch certificate (mesh/internal/projected_patches.h) ---
+
+std::vector<std::uint16_t> projected_patches(const Mesh_d& m) {
+  const Filtered_exact_kernel k;
+  const internal::Kernel_points<Filtered_exact_kernel, Point_3<double>> point(m.vertices, k);
+  const auto projected = internal::projected_orientations(k, point, m.faces);
+  return internal::projected_patches(k, point, m.faces, projected, internal::degenerate_face_flags(projected),
+                                     Mesh_topology::build(m));
+}
+
+// The pairs check_solid (with every certificate) reports, sorted.
+std::vector<std::pair<Index, Index>> check_solid_pairs(const Mesh_d& m) {
+  const Mesh_report r = check_solid(m);
+  EXPECT_TRUE(r.self_intersections_checked) << r.summary();
+  std::vector<std::pair<Index, Index>> reported;
+  for (const Mesh_issue& i : r.issues)
+    if (i.defect == Mesh_defect::self_intersection) reported.emplace_back(i.elements[0], i.elements[1]);
+  std::sort(reported.begin(), reported.end());
+  return reported;
+}
+// The pairs of the pairwise test (no topology: no certificate).
+std::vector<std::pair<Index, Index>> pairwise_pairs(const Mesh_d& m) {
+  std::vector<std::pair<Index, Index>> out;
+  for (const Face_pair& p : find_self_intersections(m).pairs) out.emplace_back(p.first, p.second);
+  return out;
+}
+
+// An open sheet over the annulus 1 <= r <= 2 that turns 1.3 times around
+// the z axis (n_r x n_theta quads, each cut in two, counterclockwise from
+// above) at height z(r, theta) = rise theta / 2 pi + tilt (theta / 2 pi)
+// (r - 1.5). Every face's normal points mostly up, so one patch would hold
+// them all; its last 0.3 turn lies over its first, so the projection is not
+// one to one. rise 0 and tilt != 0: the two layers cross along r = 1.5.
+Mesh_d spiral_sheet(double rise, double tilt, int n_r = 8, int n_theta = 160) {
+  Mesh_d m;
+  const double turn = 2 * std::numbers::pi, span = 1.3 * turn;
+  for (int j = 0; j <= n_theta; ++j)
+    for (int i = 0; i <= n_r; ++i) {
+      const double r = 1 + double(i) / n_r, theta = span * j / n_theta;
+      m.vertices.push_back(
+          {r * std::cos(theta), r * std::sin(theta), rise * theta / turn + tilt * (theta / turn) * (r - 1.5)});
+    }
+  const auto v = [&](int i, int j) { return static_cast<Index>(j * (n_r + 1) + i); };
+  for (int j = 0; j < n_theta; ++j)
+    for (int i = 0; i < n_r; ++i) {
+      m.faces.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1)});
+      m.faces.push_back({v(i, j), v(i + 1, j + 1), v(i, j + 1)});
+    }
+  return m;
+}
+
+TEST(ProjectedPatches, CoverSmoothSolidsAndCutTheSearch) {
+  for (const Mesh_d& m : {icosphere(4), torus(64, 32)}) {
+    const auto patch = projected_patches(m);
+    const auto in_patches = std::count_if(patch.begin(), patch.end(), [](std::uint16_t p) { return p != 0; });
+    EXPECT_GT(in_patches, static_cast<long>(0.8 * m.faces.size()));
+    const Face_bvh bvh(m);
+    const Mesh_topology t = Mesh_topology::build(m);
+    const Self_intersections certified = internal::find_self_intersections(m, Filtered_exact_kernel{}, bvh, 1, &t);
+    const Self_intersections pairwise = internal::find_self_intersections(m, Filtered_exact_kernel{}, bvh, 1);
+    EXPECT_TRUE(certified.is_certainly_free() && pairwise.is_certainly_free());
+    EXPECT_LT(4 * certified.candidate_pairs, pairwise.candidate_pairs);  // the search left the patches out
+  }
+}
+
+// The hard case: two layers of one sheet, every face pointing up, cross.
+// A certificate that grouped faces by their normal without the boundary
+// loop's test would put both layers in one patch and miss every crossing.
+TEST(ProjectedPatches, ASheetThatCoversItsProjectionTwiceIsTestedPairByPair) {
+  const Mesh_d m = spiral_sheet(0.0, 0.4);
+  const auto pairwise = pairwise_pairs(m);
+  ASSERT_FALSE(pairwise.empty());  // the layers cross
+  EXPECT_EQ(check_solid_pairs(m), pairwise);
+  const auto patch = projected_patches(m);
+  for (const auto& [f, g] : pairwise) EXPECT_TRUE(patch[f] == 0 || patch[f] != patch[g]) << f << " " << g;
+  // Pieces of the sheet are certified (the test does not give up on it).
+  EXPECT_GT(std::count_if(patch.begin(), patch.end(), [](std::uint16_t p) { return p != 0; }), 0);
+}
+
+TEST(ProjectedPatches, ASheetThatCoversItsProjectionTwiceWithoutCrossingIsFree) {
+  const Mesh_d m = spiral_sheet(0.5, 0.0);
+  EXPECT_TRUE(pairwise_pairs(m).empty());
+  EXPECT_TRUE(check_solid_pairs(m).empty());
+}
+
+// check_solid reports the pairwise test's pairs on solids whose vertices
+// were pushed at random (some through the surface), patches or not.
+TEST(ProjectedPatches, CheckSolidFindsThePairwiseTestsPairsOnDentedSolids) {
+  std::mt19937 rng(11);
+  int with_crossings = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    Mesh_d m = trial % 2 ? icosphere(3) : torus(24, 12);
+    std::uniform_int_distribution<Index> vertex(0, static_cast<Index>(m.vertices.size() - 1));
+    std::uniform_real_distribution<double> push(-1.5, 1.5);
+    for (int d = 0; d < 3; ++d) {
+      Point_3<double>& p = m.vertices[vertex(rng)];
+      const double s = push(rng);
+      p = {p.x * (1 + s), p.y * (1 + s), p.z * (1 + s)};
+    }
+    const auto pairwise = pairwise_pairs(m);
+    with_crossings += !pairwise.empty();
+    EXPECT_EQ(check_solid_pairs(m), pairwise) << "trial " << trial;
+  }
+  EXPECT_GT(with_crossings, 0);
 }
 
 }  // namespace

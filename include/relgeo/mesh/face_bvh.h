@@ -243,6 +243,18 @@ class Face_bvh {
     return collect<true, R>(*this, f, threads, overlapping);
   }
 
+  /// \brief The same within this hierarchy, leaving out the pairs of two
+  /// faces of one group (`group[f]`: face f's group, 0 for none): they are
+  /// neither passed to f nor counted, and the descent stops at pairs of
+  /// nodes that hold faces of one group only. For a certificate that decides
+  /// such pairs: applying it costs nothing per pair. \pre one group per face.
+  template <class R, class F>
+  std::vector<R> collect_overlapping_pairs_between_groups(std::span<const std::uint16_t> group, F&& f, int threads = 1,
+                                                          std::size_t* overlapping = nullptr) const {
+    const Groups groups = grouped(group);
+    return collect<true, R>(*this, f, threads, overlapping, &groups);
+  }
+
   /// Every pair (face of this, face of other) whose boxes overlap.
   std::vector<Face_pair> overlapping_pairs(const Face_bvh& other, int threads = 1) const {
     return collect_overlapping_pairs<Face_pair>(
@@ -595,57 +607,97 @@ class Face_bvh {
 
   static float extent(const Node& b) { return (b.hi[0] - b.lo[0]) + (b.hi[1] - b.lo[1]) + (b.hi[2] - b.lo[2]); }
 
-  // Faces of leaves x (this) and y (other) whose boxes overlap.
+  // The groups of a self search (collect_overlapping_pairs_between_groups):
+  // of each slot's face, and of each node (its faces' common group, 0 when
+  // they have none).
+  struct Groups {
+    std::vector<std::uint16_t> slot, node;
+    // Two slots or two nodes whose pairs are all within one group.
+    static bool same(std::uint16_t a, std::uint16_t b) { return a != 0 && a == b; }
+  };
+  Groups grouped(std::span<const std::uint16_t> group) const {
+    if (group.size() != size_) throw Precondition_violation("Face_bvh: one group per face expected");
+    Groups g;
+    g.slot.resize(size_);
+    for (std::size_t s = 0; s < size_; ++s) g.slot[s] = group[faces_[s]];
+    g.node.resize(node_count_);
+    for (std::size_t i = node_count_; i-- > 0;) {  // children after their parent
+      const Node& n = nodes_[i];
+      if (n.is_leaf()) {
+        std::uint16_t common = g.slot[n.first];
+        for (Index s = n.first + 1; s < n.first + n.count; ++s)
+          if (g.slot[s] != common) common = 0;
+        g.node[i] = common;
+      } else {
+        g.node[i] = g.node[n.first] == g.node[n.first + 1] ? g.node[n.first] : 0;
+      }
+    }
+    return g;
+  }
+
+  // Faces of leaves x (this) and y (other) whose boxes overlap, but those
+  // of one group.
   template <bool Self, class Emit>
-  void leaf_pairs(const Node& x, const Face_bvh& other, const Node& y, Emit& emit) const {
+  void leaf_pairs(const Node& x, const Face_bvh& other, const Node& y, Emit& emit, const Groups* groups) const {
     for (Index s = x.first; s < x.first + x.count; ++s) {
       const Box_3& bs = boxes_[s];
       if (!detail::closed_boxes_overlap(bs, y)) continue;
       for (Index t = y.first; t < y.first + y.count; ++t)
         if (do_overlap(bs, other.boxes_[t])) {
-          if constexpr (Self) emit(std::min(faces_[s], other.faces_[t]), std::max(faces_[s], other.faces_[t]));
-          else emit(faces_[s], other.faces_[t]);
+          if constexpr (Self) {
+            if (groups && Groups::same(groups->slot[s], groups->slot[t])) continue;
+            emit(std::min(faces_[s], other.faces_[t]), std::max(faces_[s], other.faces_[t]));
+          } else {
+            emit(faces_[s], other.faces_[t]);
+          }
         }
     }
   }
   template <class Emit>
-  void leaf_self_pairs(const Node& x, Emit& emit) const {
+  void leaf_self_pairs(const Node& x, Emit& emit, const Groups* groups) const {
     for (Index s = x.first; s < x.first + x.count; ++s)
       for (Index t = s + 1; t < x.first + x.count; ++t)
-        if (do_overlap(boxes_[s], boxes_[t])) emit(std::min(faces_[s], faces_[t]), std::max(faces_[s], faces_[t]));
+        if (do_overlap(boxes_[s], boxes_[t]) && !(groups && Groups::same(groups->slot[s], groups->slot[t])))
+          emit(std::min(faces_[s], faces_[t]), std::max(faces_[s], faces_[t]));
   }
 
   // One step of the descent from pair p (whose boxes overlap): its child
   // pairs whose boxes overlap, in order, by push(child pair); false when p is
   // a pair of leaves (or a leaf with itself) and cannot be split.
+  // Pairs of nodes `groups` leaves out (nodes of this hierarchy: a self
+  // search).
+  static bool left_out(const Groups* groups, Index a, Index b) {
+    return groups && Groups::same(groups->node[a], groups->node[b]);
+  }
   template <bool Self, class Push>
-  bool split_pair(const Face_bvh& other, Node_pair p, Push&& push) const {
+  bool split_pair(const Face_bvh& other, Node_pair p, Push&& push, const Groups* groups) const {
     const Node& x = nodes_[p.a];
     const Node& y = other.nodes_[p.b];
     if constexpr (Self) {
       if (p.a == p.b) {
         if (x.is_leaf()) return false;
         const Index l = x.first, r = x.first + 1;
-        push(Node_pair{l, l});
-        if (detail::closed_boxes_overlap(nodes_[l], nodes_[r])) push(Node_pair{l, r});
-        push(Node_pair{r, r});
+        if (!left_out(groups, l, l)) push(Node_pair{l, l});
+        if (detail::closed_boxes_overlap(nodes_[l], nodes_[r]) && !left_out(groups, l, r)) push(Node_pair{l, r});
+        if (!left_out(groups, r, r)) push(Node_pair{r, r});
         return true;
       }
     }
     if (x.is_leaf() && y.is_leaf()) return false;
     if (y.is_leaf() || (!x.is_leaf() && extent(x) >= extent(y))) {
       for (Index c = x.first; c < x.first + 2; ++c)
-        if (detail::closed_boxes_overlap(nodes_[c], y)) push(Node_pair{c, p.b});
+        if (detail::closed_boxes_overlap(nodes_[c], y) && !left_out(groups, c, p.b)) push(Node_pair{c, p.b});
     } else {
       for (Index c = y.first; c < y.first + 2; ++c)
-        if (detail::closed_boxes_overlap(x, other.nodes_[c])) push(Node_pair{p.a, c});
+        if (detail::closed_boxes_overlap(x, other.nodes_[c]) && !left_out(groups, p.a, c)) push(Node_pair{p.a, c});
     }
     return true;
   }
 
   // The pairs under node pair `start`, depth first.
   template <bool Self, class Emit>
-  void traverse(const Face_bvh& other, Node_pair start, Emit& emit, std::vector<Node_pair>& stack) const {
+  void traverse(const Face_bvh& other, Node_pair start, Emit& emit, std::vector<Node_pair>& stack,
+                const Groups* groups = nullptr) const {
     stack.clear();
     stack.push_back(start);
     std::array<Node_pair, 3> children;
@@ -653,10 +705,13 @@ class Face_bvh {
       const Node_pair p = stack.back();
       stack.pop_back();
       int k = 0;
-      const bool split = split_pair<Self>(other, p, [&](Node_pair c) { children[k++] = c; });
+      const bool split = split_pair<Self>(
+          other, p, [&](Node_pair c) { children[k++] = c; }, groups);
       if (!split) {
-        if (Self && p.a == p.b) leaf_self_pairs(nodes_[p.a], emit);
-        else leaf_pairs<Self>(nodes_[p.a], other, other.nodes_[p.b], emit);
+        if (Self && p.a == p.b)
+          leaf_self_pairs(nodes_[p.a], emit, groups);
+        else
+          leaf_pairs<Self>(nodes_[p.a], other, other.nodes_[p.b], emit, groups);
         continue;
       }
       while (k > 0) stack.push_back(children[--k]);  // first child on top
@@ -667,16 +722,20 @@ class Face_bvh {
   // first until there are enough or none can be split): the same list for
   // every thread count.
   template <bool Self>
-  std::vector<Node_pair> frontier(const Face_bvh& other) const {
+  std::vector<Node_pair> frontier(const Face_bvh& other, const Groups* groups = nullptr) const {
     std::vector<Node_pair> items;
-    if (size_ == 0 || other.size_ == 0 || !detail::closed_boxes_overlap(nodes_[0], other.nodes_[0])) return items;
+    if (size_ == 0 || other.size_ == 0 || !detail::closed_boxes_overlap(nodes_[0], other.nodes_[0]) ||
+        left_out(groups, 0, 0))
+      return items;
     items.push_back({0, 0});
     constexpr std::size_t target = 256;
     while (items.size() < target) {
       std::vector<Node_pair> next;
       bool split_any = false;
       for (const Node_pair& p : items)
-        if (split_pair<Self>(other, p, [&](Node_pair c) { next.push_back(c); })) split_any = true;
+        if (split_pair<Self>(
+                other, p, [&](Node_pair c) { next.push_back(c); }, groups))
+          split_any = true;
         else next.push_back(p);
       items = std::move(next);
       if (!split_any) break;
@@ -691,15 +750,16 @@ class Face_bvh {
   }
 
   template <bool Self, class R, class F>
-  std::vector<R> collect(const Face_bvh& other, F& f, int threads, std::size_t* overlapping) const {
+  std::vector<R> collect(const Face_bvh& other, F& f, int threads, std::size_t* overlapping,
+                         const Groups* groups = nullptr) const {
     const Default_fp_environment environment;
-    const std::vector<Node_pair> items = frontier<Self>(other);
+    const std::vector<Node_pair> items = frontier<Self>(other, groups);
     std::vector<R> result;
     if (internal::thread_count(threads) <= 1) {
       std::vector<Node_pair> stack;
       std::size_t calls = 0;
       auto emit = [&](Index a, Index b) { ++calls, f(a, b, result); };
-      for (const Node_pair& p : items) traverse<Self>(other, p, emit, stack);
+      for (const Node_pair& p : items) traverse<Self>(other, p, emit, stack, groups);
       if (overlapping) *overlapping = calls;
       return result;
     }
@@ -709,7 +769,7 @@ class Face_bvh {
       std::vector<Node_pair> stack;
       std::size_t n = 0;
       auto emit = [&](Index a, Index b) { ++n, f(a, b, parts[i]); };
-      traverse<Self>(other, items[i], emit, stack);
+      traverse<Self>(other, items[i], emit, stack, groups);
       calls[i] = n;
     });
     if (overlapping) {

@@ -7,10 +7,12 @@
 // what the two faces share (internal/face_pair_predicates.h: no vertex ->
 // an edge of one meets the other; a vertex -> the opposite edges against
 // the other face; an edge -> folded onto each other; all three -> identical).
-// check_solid, which has the mesh's topology, first certifies the vertices
-// whose star a projection along a coordinate axis maps one to one
-// (internal/embedded_stars.h): the pairs of faces around such a vertex,
-// nearly all candidate pairs of a smooth mesh, need no further predicate.
+// check_solid, which has the mesh's topology, first certifies patches of
+// faces (internal/projected_patches.h) and the vertices whose star
+// (internal/embedded_stars.h) a projection along a coordinate axis maps one
+// to one: the pairs of faces within such a patch, which the search leaves
+// out, and around such a vertex, nearly all candidate pairs of a smooth
+// mesh, need no further predicate.
 // Under Filtered_exact_kernel (the default for double coordinates) and
 // Exact_kernel every pair is decided exactly; a fail-safe or interval
 // kernel lists the pairs it cannot decide instead of guessing. It decides
@@ -44,6 +46,7 @@
 #include "relgeo/mesh/internal/face_pair_predicates.h"
 #include "relgeo/mesh/internal/kernel_points.h"
 #include "relgeo/mesh/internal/parallel.h"
+#include "relgeo/mesh/internal/projected_patches.h"
 #include "relgeo/mesh/mesh_errors.h"
 #include "relgeo/mesh/mesh_topology.h"
 #include "relgeo/mesh/triangle_mesh.h"
@@ -107,21 +110,23 @@ inline void sort_hits(const std::vector<Self_intersection_hit>& hits, Self_inter
 /// The narrow phase on candidate pairs from `bvh`, for points already in K
 /// and faces flagged degenerate (1), undecided (2) or testable (0). Pairs
 /// sharing a vertex flagged in `embedded` (embedded_star_flags) are decided
-/// by that certificate, and pairs of faces in one nonzero `group`
-/// (Certified_faces::group, below) by theirs.
+/// by that certificate, and pairs of faces in one nonzero `group` (a
+/// projected patch, projected_patches.h, or Certified_faces::group, below)
+/// by theirs: the search leaves them out.
 template <Kernel K, class Points>
 void find_self_intersections(const K& k, const Points& point, const std::vector<Triangle>& faces,
                              const std::vector<unsigned char>& skip, const Face_bvh& bvh, int threads,
                              Self_intersections& out, const std::vector<unsigned char>* embedded = nullptr,
-                             const std::vector<std::uint8_t>* group = nullptr) {
-  const std::vector<Self_intersection_hit> hits = bvh.collect_overlapping_pairs<Self_intersection_hit>(
-      [&](Index f, Index g, std::vector<Self_intersection_hit>& found) {
-        if (skip[f] || skip[g]) return;
-        if (group && (*group)[f] && (*group)[f] == (*group)[g]) return;
-        if (embedded && share_embedded_star(faces[f], faces[g], *embedded)) return;
-        test_face_pair(k, point, faces, f, g, found);
-      },
-      threads, &out.candidate_pairs);
+                             const std::vector<std::uint16_t>* group = nullptr) {
+  const auto test = [&](Index f, Index g, std::vector<Self_intersection_hit>& found) {
+    if (skip[f] || skip[g]) return;
+    if (embedded && share_embedded_star(faces[f], faces[g], *embedded)) return;
+    test_face_pair(k, point, faces, f, g, found);
+  };
+  const std::vector<Self_intersection_hit> hits =
+      group ? bvh.collect_overlapping_pairs_between_groups<Self_intersection_hit>(*group, test, threads,
+                                                                                  &out.candidate_pairs)
+            : bvh.collect_overlapping_pairs<Self_intersection_hit>(test, threads, &out.candidate_pairs);
   sort_hits(hits, out);
 }
 
@@ -201,24 +206,29 @@ std::vector<unsigned char> degenerate_face_flags(const K& k, const Points& point
 }
 
 /// The whole test on a mesh whose face hierarchy `bvh` is built; with its
-/// topology `t` (a manifold, consistently oriented mesh) the pairs around
-/// vertices with an embedded star are decided by that certificate.
+/// topology `t` (a manifold, consistently oriented mesh) the pairs within a
+/// projected patch and around vertices with an embedded star are decided by
+/// those certificates.
 template <Kernel K, class P>
 Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k, const Face_bvh& bvh,
                                            int threads, const Mesh_topology* t = nullptr) {
   const Kernel_points<K, P> point(m.vertices, k);
   Self_intersections out;
   out.coordinates_exact = point.exact();
-  // Every plane only when the stars need them (the first strict sign
-  // decides degeneracy).
+  // Every plane only when the certificates need them (the first strict
+  // sign decides degeneracy).
   const std::vector<std::array<Certified_sign, 3>> projected =
       projected_orientations(k, point, m.faces, /*every_plane=*/t != nullptr);
   const std::vector<unsigned char> skip = degenerate_face_flags(projected);
   for (Index f = 0; f < skip.size(); ++f)
     if (skip[f]) (skip[f] == 1 ? out.degenerate_faces : out.undecided_faces).push_back(f);
-  std::vector<unsigned char> embedded;
-  if (t) embedded = embedded_star_flags(k, point, m.faces, projected, skip, *t);
-  find_self_intersections(k, point, m.faces, skip, bvh, threads, out, t ? &embedded : nullptr);
+  if (!t) {
+    find_self_intersections(k, point, m.faces, skip, bvh, threads, out);
+    return out;
+  }
+  const std::vector<std::uint16_t> patch = projected_patches(k, point, m.faces, projected, skip, *t);
+  const std::vector<unsigned char> embedded = embedded_star_flags(k, point, m.faces, projected, skip, *t, &patch);
+  find_self_intersections(k, point, m.faces, skip, bvh, threads, out, &embedded, &patch);
   return out;
 }
 

@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstdint>
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
@@ -83,14 +84,18 @@ std::vector<std::array<Certified_sign, 3>> projected_orientations(
 }
 
 /// For each vertex, 1 when its star is certified embedded by a projection
-/// (file comment), 0 otherwise; `projected` computed on every plane. `skip`: faces left out of the test
-/// (degenerate or undecided); a vertex of one is not certified.
+/// (file comment), 0 otherwise; `projected` computed on every plane. `skip`:
+/// faces left out of the test (degenerate or undecided); a vertex of one is
+/// not certified. `patch`, when given, puts faces in groups whose pairs are
+/// decided otherwise (projected_patches.h): a vertex whose faces are all in
+/// one is not tried.
 /// \pre `t` is the topology of `faces`, an edge- and vertex-manifold,
 /// consistently oriented mesh (boundary vertices are never certified).
 template <class K, class Points>
 std::vector<unsigned char> embedded_star_flags(const K& k, const Points& point, const std::vector<Triangle>& faces,
                                                const std::vector<std::array<Certified_sign, 3>>& projected,
-                                               const std::vector<unsigned char>& skip, const Mesh_topology& t) {
+                                               const std::vector<unsigned char>& skip, const Mesh_topology& t,
+                                               const std::vector<std::uint16_t>* patch = nullptr) {
   using A = Point_access<typename K::Point_3>;
   using P2 = typename K::Point_2;
   const auto compare = k.compare_xy_2_object();
@@ -107,6 +112,10 @@ std::vector<unsigned char> embedded_star_flags(const K& k, const Points& point, 
   // Per vertex: the planes in which every face around it projects with
   // positive (bits 0-2) or negative (bits 3-5) orientation.
   std::vector<unsigned char> same(nv, 63);
+  // The patch of every face around each vertex (0: none or several; unset
+  // for a vertex of no face).
+  constexpr std::uint32_t unset = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> one_patch(patch ? nv : 0, unset);
   for (std::size_t f = 0; f < faces.size(); ++f) {
     unsigned char bits = 0;
     if (!skip[f])
@@ -114,8 +123,14 @@ std::vector<unsigned char> embedded_star_flags(const K& k, const Points& point, 
         if (certainly(projected[f][plane], Certified_sign::positive)) bits |= static_cast<unsigned char>(1u << plane);
         if (certainly(projected[f][plane], Certified_sign::negative)) bits |= static_cast<unsigned char>(8u << plane);
       }
-    for (Index v : faces[f]) same[v] &= bits;
+    for (Index v : faces[f]) {
+      same[v] &= bits;
+      if (patch) one_patch[v] = one_patch[v] == unset || one_patch[v] == (*patch)[f] ? (*patch)[f] : 0;
+    }
   }
+  if (patch)
+    for (Index v = 0; v < nv; ++v)
+      if (one_patch[v] != unset && one_patch[v] != 0) same[v] = 0;
   // One such plane per vertex (the first), and the link's crossings of the
   // line of v' in it: upward (counted when v' is left of every link edge)
   // or downward (right of every one), saturating at 2.

@@ -50,6 +50,7 @@
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/core/fp_environment.h"
 #include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/internal/embedded_stars.h"
@@ -389,6 +390,9 @@ std::vector<std::uint16_t> projected_patches(const K& k, const Points& point, co
                                              const std::vector<std::array<Certified_sign, 3>>& projected,
                                              const std::vector<unsigned char>& skip, const Mesh_topology& t,
                                              Projected_patch_sizes sizes = {}) {
+  // The normals in doubles that choose the patches, in the default
+  // environment: the same patches (and report) whatever the caller's.
+  const Default_fp_environment environment;
   return Projected_patch_finder<K, Points>(k, point, faces, projected, skip, t, sizes).patches();
 }
 

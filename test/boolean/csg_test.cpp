@@ -123,5 +123,61 @@ TEST(Csg, AFailedStepStopsTheTreeAndSaysWhere) {
   EXPECT_FALSE(r.mesh.faces.empty());
 }
 
+// Exact intermediates: the chain's steps kept exact, validated exactly, and
+// only the root rounded: the root's mesh is the step-by-step exact chain's
+// result rounded once, and the coordinates grow with every step (the cost
+// the documentation states).
+TEST(Csg, ExactIntermediatesRoundOnlyTheRoot) {
+  const Boolean_chain c = make_chain(Chain_family::drilled_sphere, 3, 7, 2);
+  Csg_options o;
+  o.intermediates = Csg_intermediates::exact;
+  const Csg_result r = csg(csg_tree(c), Exact_kernel{}, o);
+  ASSERT_TRUE(r.ok()) << r.failure;
+  ASSERT_EQ(r.steps.size(), 3u);
+  for (const Csg_step& s : r.steps) EXPECT_EQ(s.validation, "valid solid") << s.node;
+  EXPECT_GT(r.steps[0].coordinate_bits, 64u);
+  EXPECT_GT(r.steps[2].coordinate_bits, r.steps[0].coordinate_bits);
+  EXPECT_EQ(r.validation, "valid solid");
+  // The same chain by hand: exact Booleans, the last exact mesh rounded.
+  Boolean_options nearest;
+  nearest.rounding = Output_rounding::nearest;
+  auto exact = exact_operand(c.start, Exact_kernel{});
+  for (const auto& [op, m] : c.steps) {
+    const auto step = boolean(exact, exact_operand(m, Exact_kernel{}), op, Exact_kernel{}, nearest);
+    ASSERT_TRUE(step.ok()) << step.failure;
+    exact = step.exact_mesh();
+  }
+  ASSERT_EQ(r.rounding.flips + r.rounding.collapses, 0u);  // (the repair, if any, only moved vertices)
+  ASSERT_EQ(r.mesh.faces, exact.faces);
+  ASSERT_EQ(r.mesh.vertices.size(), exact.vertices.size());
+  std::size_t moved = 0;
+  const Exact_kernel k;
+  for (std::size_t v = 0; v < exact.vertices.size(); ++v) {
+    const Point_3<double> nearest_double =
+        k.approximate_point_3_object()(k.construct_implicit_point_3_object()(exact.vertices[v])).point;
+    moved += r.mesh.vertices[v] != nearest_double;
+  }
+  EXPECT_LE(moved, r.rounding.moved_vertices);
+  EXPECT_EQ(r.steps.back().volume, validate_solid(exact, Exact_kernel{}).volume.value);
+}
+
+TEST(Csg, ExactIntermediatesNeedAnExactKernel) {
+  Csg_options o;
+  o.intermediates = Csg_intermediates::exact;
+  try {
+    (void)csg(cubes_tree(), Filtered_exact_kernel{}, o);
+    ADD_FAILURE() << "no error";
+  } catch (const Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("filtered"), std::string::npos) << e.what();
+  }
+  // A bad tree is refused as with rounded intermediates.
+  EXPECT_THROW((void)csg(Csg_node::operation(Kind::union_of, {Csg_node::solid(cube(0, 0, 0, 1))}), Exact_kernel{}, o),
+               Invalid_csg_node);
+  const Csg_result exact = csg(cubes_tree(), Exact_kernel{}, o);
+  ASSERT_TRUE(exact.ok()) << exact.failure;
+  EXPECT_EQ(exact.steps[1].volume, 1.34375);
+  EXPECT_EQ(exact.rounding.rounds, 0);  // every vertex a double: nothing to repair
+}
+
 }  // namespace
 }  // namespace relgeo::test

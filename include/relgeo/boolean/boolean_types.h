@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <concepts>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -244,6 +245,19 @@ struct Boolean_output {
   bool ok() const { return status == Status::ok; }
 };
 
+/// \concept ExactChainingKernel
+/// A kernel whose Booleans can chain without rounding: exact constructions,
+/// implicit points that are exact points of K::Point_3 (`.point`), and
+/// points that are not doubles (Exact_kernel, Cgal_kernel<CGAL::Epeck>).
+/// relgeo::boolean takes meshes of K's points under such a kernel, and
+/// Boolean_result::exact_mesh() gives one.
+template <class K>
+concept ExactChainingKernel =
+    IntersectionKernel_3<K> && K::has_exact_constructions && !std::same_as<typename K::Point_3, Point_3<double>> &&
+    requires(const typename K::Implicit_point_3& p) {
+  { p.point } -> std::convertible_to<typename K::Point_3>;
+};
+
 /// The result of relgeo::boolean under kernel K: the output, and its new
 /// vertices as K's points.
 template <IntersectionKernel_3 K>
@@ -268,6 +282,23 @@ struct Boolean_result : Boolean_output {
     v.reserve(mesh.vertices.size());
     for (Index i = 0; i < mesh.vertices.size(); ++i) v.push_back(exact_vertex(i));
     return v;
+  }
+  /// The exact result as a mesh of K's points: the output's faces, vertex i
+  /// exact_vertex(i). Under an exact kernel this is the operand of the next
+  /// Boolean of an exact chain (relgeo::boolean on meshes of K's points).
+  /// \throws Precondition_violation for a failed Boolean, and when the
+  /// repair of the rounding flipped or collapsed edges: those faces are not
+  /// the exact result's (Output_rounding::nearest keeps the exact faces).
+  Triangle_mesh<typename K::Point_3> exact_mesh() const requires ExactChainingKernel<K> {
+    if (!ok()) throw Precondition_violation("Boolean_result::exact_mesh: the Boolean failed (" + failure + ")");
+    if (rounding.flips != 0 || rounding.collapses != 0)
+      throw Precondition_violation(
+          "Boolean_result::exact_mesh: the rounding repair changed faces (run with Output_rounding::nearest)");
+    Triangle_mesh<typename K::Point_3> m;
+    m.faces = mesh.faces;
+    m.vertices.reserve(mesh.vertices.size());
+    for (Index i = 0; i < mesh.vertices.size(); ++i) m.vertices.push_back(exact_vertex(i).point);
+    return m;
   }
 };
 

@@ -11,11 +11,20 @@
 // reduced pairwise as a balanced tree (small pieces first, as Manifold's
 // batch Boolean does); a difference takes the first argument minus each of
 // the others in turn.
+//
+// Under a kernel of exact constructions the intermediates can instead stay
+// exact (Csg_intermediates::exact): each a mesh of the kernel's points,
+// validated exactly, and the root's exact solid rounded once at the end.
 #pragma once
 
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <concepts>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -25,7 +34,9 @@
 #include "relgeo/core/internal/stopwatch.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
+#include "relgeo/mesh/rounding_repair.h"
 #include "relgeo/mesh/self_intersection.h"
+#include "relgeo/mesh/solid_validation.h"
 
 namespace relgeo {
 
@@ -71,13 +82,36 @@ class Invalid_csg_node : public Invalid_input {
   std::string node_;
 };
 
+/// What the intermediate results of a CSG tree are.
+enum class Csg_intermediates : std::uint8_t {
+  /// Rounded to doubles at every step (with the Boolean's rounding, by
+  /// default repaired: each a valid solid in doubles). Fast; the size of the
+  /// numbers stays that of doubles.
+  rounded,
+  /// Kept exact as meshes of the kernel's points (an ExactChainingKernel:
+  /// Exact_kernel, Cgal_kernel<CGAL::Epeck>), each validated exactly; the
+  /// root's exact solid is rounded once, at the end, with the Boolean's
+  /// rounding. The root is then the exact result of the whole tree rounded
+  /// once, but the coordinates' size grows with every step, and with it the
+  /// time (doc/boolean.md, "Exact chains").
+  exact
+};
+
+constexpr std::string_view to_string(Csg_intermediates i) {
+  return i == Csg_intermediates::exact ? "exact" : "rounded";
+}
+
 /// Options of relgeo::csg.
 struct Csg_options {
   /// Options of each Boolean. `check_operands` and `check_self_intersections`
   /// apply to the leaves (checked once); an intermediate result is not
   /// checked again when `validate_output` is on (its validation is its
-  /// certificate), and is checked as an operand when it is off.
+  /// certificate), and is checked as an operand when it is off. With exact
+  /// intermediates, every intermediate is validated exactly (whatever
+  /// `validate_output` says: that validation is what certifies it), and
+  /// `rounding`, `repair` and `validate_output` apply to the root's rounding.
   Boolean_options boolean;
+  Csg_intermediates intermediates = Csg_intermediates::rounded;
 };
 
 /// One Boolean of the evaluation.
@@ -90,6 +124,10 @@ struct Csg_step {
   double volume = 0;      ///< of the result (its validation)
   std::string validation; ///< the validation's summary ("valid solid")
   Rounding_repair_report rounding;
+  /// Exact intermediates: the largest size of a coordinate of the result, in
+  /// bits (numerator and denominator; 0 when not known: rounded
+  /// intermediates, a kernel whose numbers are not GMP rationals).
+  std::size_t coordinate_bits = 0;
   double seconds = 0;
 };
 
@@ -103,12 +141,55 @@ struct Csg_result {
   Mesh_double mesh;
   /// Every Boolean, in the order evaluated.
   std::vector<Csg_step> steps;
+  /// Exact intermediates: the rounding of the root's exact solid to `mesh`
+  /// (its repair, and the validation's summary of `mesh` when
+  /// `validate_output`); empty with rounded intermediates (the last step
+  /// has them).
+  Rounding_repair_report rounding;
+  std::string validation;
   double seconds = 0;
 
   bool ok() const { return status == Status::ok; }
 };
 
 namespace internal {
+
+// The Booleans of a tree in their order, whatever a node's solid is (Part:
+// false when empty): `leaf(n)` gives a leaf's, `step(a, b, kind, path)` a
+// Boolean's; an empty part (a failed step) stops the evaluation.
+template <class Part, class Leaf, class Step>
+Part reduce_tree(const Csg_node& n, const std::string& path, const Leaf& leaf, const Step& step) {
+  if (n.kind == Csg_node::Kind::solid) return leaf(n);
+  std::vector<Part> parts;
+  for (std::size_t i = 0; i < n.args.size(); ++i) {
+    Part p = reduce_tree<Part>(n.args[i], path + "." + std::to_string(i), leaf, step);
+    if (!p) return {};
+    parts.push_back(std::move(p));
+  }
+  if (n.kind == Csg_node::Kind::difference) {
+    Part result = parts[0];
+    for (std::size_t i = 1; i < parts.size() && result; ++i) result = step(result, parts[i], n.kind, path);
+    return result;
+  }
+  // Balanced pairwise reduction: small operands meet first.
+  while (parts.size() > 1) {
+    std::vector<Part> next;
+    for (std::size_t i = 0; i + 1 < parts.size(); i += 2) {
+      Part r = step(parts[i], parts[i + 1], n.kind, path);
+      if (!r) return {};
+      next.push_back(std::move(r));
+    }
+    if (parts.size() % 2) next.push_back(parts.back());
+    parts = std::move(next);
+  }
+  return parts[0];
+}
+
+constexpr Boolean_operation boolean_operation(Csg_node::Kind kind) {
+  return kind == Csg_node::Kind::union_of       ? Boolean_operation::union_of
+         : kind == Csg_node::Kind::intersection ? Boolean_operation::intersection
+                                                : Boolean_operation::difference;
+}
 
 template <IntersectionKernel_3 K>
 class Csg_evaluator {
@@ -152,33 +233,14 @@ class Csg_evaluator {
 
   // The node's solid; empty when a step failed (result_.failure says which).
   Part evaluate(const Csg_node& n, const std::string& path) {
-    if (n.kind == Csg_node::Kind::solid) {
-      const auto it = leaf_opposites_.find(n.mesh.get());
-      return {n.mesh, it == leaf_opposites_.end() ? nullptr : it->second};
-    }
-    std::vector<Part> parts;
-    for (std::size_t i = 0; i < n.args.size(); ++i) {
-      Part p = evaluate(n.args[i], path + "." + std::to_string(i));
-      if (!p) return {};
-      parts.push_back(std::move(p));
-    }
-    if (n.kind == Csg_node::Kind::difference) {
-      Part result = parts[0];
-      for (std::size_t i = 1; i < parts.size() && result; ++i) result = step(result, parts[i], n.kind, path);
-      return result;
-    }
-    // Balanced pairwise reduction: small operands meet first.
-    while (parts.size() > 1) {
-      std::vector<Part> next;
-      for (std::size_t i = 0; i + 1 < parts.size(); i += 2) {
-        Part r = step(parts[i], parts[i + 1], n.kind, path);
-        if (!r) return {};
-        next.push_back(std::move(r));
-      }
-      if (parts.size() % 2) next.push_back(parts.back());
-      parts = std::move(next);
-    }
-    return parts[0];
+    const auto leaf = [&](const Csg_node& solid) -> Part {
+      const auto it = leaf_opposites_.find(solid.mesh.get());
+      return {solid.mesh, it == leaf_opposites_.end() ? nullptr : it->second};
+    };
+    const auto boolean_step = [&](const Part& a, const Part& b, Csg_node::Kind kind, const std::string& at) {
+      return step(a, b, kind, at);
+    };
+    return reduce_tree<Part>(n, path, leaf, boolean_step);
   }
 
   Csg_result& result() { return result_; }
@@ -187,9 +249,7 @@ class Csg_evaluator {
   Part step(const Part& pa, const Part& pb, Csg_node::Kind kind, const std::string& path) {
     const Mesh_double& a = *pa.mesh;
     const Mesh_double& b = *pb.mesh;
-    const Boolean_operation op = kind == Csg_node::Kind::union_of       ? Boolean_operation::union_of
-                                 : kind == Csg_node::Kind::intersection ? Boolean_operation::intersection
-                                                                         : Boolean_operation::difference;
+    const Boolean_operation op = boolean_operation(kind);
     internal::Stopwatch clock;
     // The leaves checked in full (check) and every result validated (here):
     // both operands are certified solids.
@@ -198,7 +258,7 @@ class Csg_evaluator {
       options.certified_operands = Operand_certificate(&a, &b, pa.opposites.get(), pb.opposites.get());
     auto r = boolean(a, b, op, k_, options);
     Csg_step s{path, kind, r.ok(), r.failure, r.mesh.faces.size(), r.validation.volume.value,
-               r.validation.summary(), r.rounding, 0};
+               r.validation.summary(), r.rounding, 0, 0};
     if (s.ok && inner_.validate_output && !r.validation.is_valid_solid()) {
       s.ok = false;
       s.failure = "the result is not a valid solid: " + s.validation;
@@ -226,6 +286,115 @@ class Csg_evaluator {
   std::unordered_map<const Mesh_double*, std::shared_ptr<const std::vector<Index>>> leaf_opposites_;
 };
 
+// The largest coordinate of m in bits (numerator and denominator), for
+// GMP rationals; 0 for other numbers.
+template <class P>
+std::size_t coordinate_bits(const Triangle_mesh<P>& m) {
+  std::size_t bits = 0;
+  if constexpr (std::same_as<P, Point_3<mpq_class>>)
+    for (const P& p : m.vertices)
+      for (const mpq_class* c : {&p.x, &p.y, &p.z})
+        bits = std::max(bits, mpz_sizeinbase(c->get_num_mpz_t(), 2) + mpz_sizeinbase(c->get_den_mpz_t(), 2));
+  return bits;
+}
+
+// Exact intermediates (Csg_intermediates::exact): the leaves (checked in
+// doubles by Csg_evaluator::check) as K's points, each Boolean on exact
+// operands with the nearest rounding (which keeps the exact faces), its
+// exact_mesh() validated under K (the certificate of the next step, which
+// does not check it again), and the root rounded once.
+template <ExactChainingKernel K>
+class Exact_csg_evaluator {
+ public:
+  using Exact_mesh = Triangle_mesh<typename K::Point_3>;
+  using Part = std::shared_ptr<const Exact_mesh>;
+
+  Exact_csg_evaluator(const K& k, const Csg_options& o) : k_(k), options_(o) {
+    step_options_ = o.boolean;
+    step_options_.check_operands = false;
+    step_options_.validate_output = false;
+    step_options_.rounding = Output_rounding::nearest;
+  }
+
+  // The root's exact solid; empty when a step failed.
+  Part evaluate(const Csg_node& tree) {
+    const auto leaf = [&](const Csg_node& n) { return exact_leaf(n); };
+    const auto boolean_step = [&](const Part& a, const Part& b, Csg_node::Kind kind, const std::string& path) {
+      return step(a, b, kind, path);
+    };
+    return reduce_tree<Part>(tree, "root", leaf, boolean_step);
+  }
+
+  // The root's exact solid in doubles: each vertex its nearest double, what
+  // that broke repaired (Output_rounding::repaired: every vertex may move),
+  // and the result validated in doubles.
+  void round_root(const Exact_mesh& root) {
+    Mesh_double& m = result_.mesh;
+    m.faces = root.faces;
+    m.vertices.clear();
+    m.vertices.reserve(root.vertices.size());
+    const auto implicit = k_.construct_implicit_point_3_object();
+    const auto approximate = k_.approximate_point_3_object();
+    for (const auto& p : root.vertices) m.vertices.push_back(approximate(implicit(p)).point);
+    if (options_.boolean.rounding == Output_rounding::repaired) {
+      result_.rounding = repair_rounding(m, std::vector<char>(m.vertices.size(), 1), options_.boolean.repair);
+      if (!result_.rounding.converged())
+        return fail("root (rounding): " + std::to_string(result_.rounding.remaining_pairs.size()) +
+                    " face pairs still meet and " + std::to_string(result_.rounding.remaining_degenerate_faces.size()) +
+                    " faces are degenerate after the repair");
+    }
+    if (options_.boolean.validate_output) {
+      const Solid_report v = validate_solid(m, Filtered_exact_kernel{}, options_.boolean.validation);
+      result_.validation = v.summary();
+      if (!v.is_valid_solid()) fail("root (rounding): the rounded solid is not a valid solid: " + result_.validation);
+    }
+  }
+
+  Csg_result& result() { return result_; }
+
+ private:
+  Part exact_leaf(const Csg_node& n) {
+    Part& p = leaves_[n.mesh.get()];
+    if (!p) p = std::make_shared<const Exact_mesh>(exact_operand(*n.mesh, k_));
+    return p;
+  }
+
+  Part step(const Part& a, const Part& b, Csg_node::Kind kind, const std::string& path) {
+    internal::Stopwatch clock;
+    auto r = boolean(*a, *b, boolean_operation(kind), k_, step_options_);
+    Csg_step s{path, kind, r.ok(), r.failure, r.mesh.faces.size(), 0, {}, r.rounding, 0, 0};
+    Part out;
+    if (s.ok) {
+      auto exact = std::make_shared<const Exact_mesh>(r.exact_mesh());
+      const Solid_report v = validate_solid(*exact, k_, options_.boolean.validation);
+      s.volume = v.volume.value;
+      s.validation = v.summary();
+      s.coordinate_bits = coordinate_bits(*exact);
+      if (v.is_valid_solid()) out = std::move(exact);
+      else s.ok = false, s.failure = "the exact result is not a valid solid: " + s.validation;
+    }
+    s.seconds = clock.elapsed();
+    result_.steps.push_back(s);
+    if (!s.ok) {
+      fail("node " + path + " (" + std::string(to_string(kind)) + ", step " + std::to_string(result_.steps.size()) +
+           "): " + s.failure);
+      result_.mesh = std::move(r.mesh);
+    }
+    return out;
+  }
+
+  void fail(std::string why) {
+    result_.status = Csg_result::Status::failed;
+    result_.failure = std::move(why);
+  }
+
+  const K& k_;
+  Csg_options options_;
+  Boolean_options step_options_;
+  Csg_result result_;
+  std::unordered_map<const Mesh_double*, Part> leaves_;  // a leaf used twice is converted once
+};
+
 }  // namespace internal
 
 /// \brief Evaluates the CSG tree `tree` with relgeo::boolean under kernel K
@@ -234,17 +403,34 @@ class Csg_evaluator {
 /// that fails (a kernel that cannot decide, a rounding that cannot be
 /// repaired, a result that is not a valid solid) stops the evaluation: the
 /// result says which node, and `mesh` is that step's output.
+/// With exact intermediates (Csg_options::intermediates) the steps are
+/// Booleans of exact solids and `rounding` and `validation` describe the
+/// root's one rounding.
 /// \throws Invalid_csg_node (before any Boolean) for an operation with fewer
 /// than two arguments, a leaf without a mesh, and, with
 /// `options.boolean.check_operands`, a leaf that is not a valid solid.
+/// \throws Invalid_input for exact intermediates under a kernel that is not
+/// an ExactChainingKernel.
 template <IntersectionKernel_3 K = Filtered_exact_kernel>
 Csg_result csg(const Csg_node& tree, const K& k = K{}, const Csg_options& options = {}) {
   internal::Stopwatch clock;
   internal::Csg_evaluator<K> e(k, options);
   e.check(tree, "root");
-  const auto root = e.evaluate(tree, "root");
-  Csg_result r = std::move(e.result());
-  if (root) r.mesh = *root.mesh;
+  Csg_result r;
+  if (options.intermediates == Csg_intermediates::exact) {
+    if constexpr (ExactChainingKernel<K>) {
+      internal::Exact_csg_evaluator<K> exact(k, options);
+      if (const auto root = exact.evaluate(tree)) exact.round_root(*root);
+      r = std::move(exact.result());
+    } else {
+      throw Invalid_input("csg: exact intermediates need a kernel of exact constructions whose points are exact (" +
+                          K::name() + " is not one; Exact_kernel and Cgal_kernel<CGAL::Epeck> are)");
+    }
+  } else {
+    const auto root = e.evaluate(tree, "root");
+    r = std::move(e.result());
+    if (root) r.mesh = *root.mesh;
+  }
   r.seconds = clock.elapsed();
   return r;
 }

@@ -35,9 +35,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <concepts>
 #include <limits>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -66,13 +68,16 @@
 namespace relgeo {
 namespace internal {
 
-template <IntersectionKernel_3 K>
+// OP: the operands' point type, doubles or (an exact chain: Exact_operands)
+// K's own exact points.
+template <IntersectionKernel_3 K, class OP = Point_3<double>>
 class Boolean_engine {
  public:
   using P = typename K::Point_3;
   using IP = typename K::Implicit_point_3;
-  using Mesh = Triangle_mesh<Point_3<double>>;
+  using Mesh = Triangle_mesh<OP>;
   using Result = Boolean_result<K>;
+  static constexpr bool exact_operands = !std::same_as<OP, Point_3<double>>;
 
   Boolean_engine(const Mesh& a, const Mesh& b, Boolean_operation op, const K& k, const Boolean_options& o)
       : mesh_{&a, &b}, op_(op), k_(k), options_(o), points_(k, mesh_) {}
@@ -143,9 +148,12 @@ class Boolean_engine {
 
   // ---- 1. operands ------------------------------------------------------------
 
-  // The operands are double meshes: their validity is decided exactly,
-  // whatever kernel the Boolean itself runs under.
+  // The operands' validity is decided exactly, whatever kernel the Boolean
+  // itself runs under: double meshes by the filtered kernel, an exact
+  // chain's meshes of K's exact points by K. The output in doubles is
+  // validated by the filtered kernel.
   using Check_kernel = Filtered_exact_kernel;
+  using Operand_check_kernel = std::conditional_t<exact_operands, K, Check_kernel>;
 
   // The checks build the operand's topology and (with the self-intersection
   // test) its face hierarchy. The later phases reuse the half-edge opposites
@@ -157,8 +165,8 @@ class Boolean_engine {
     // pairs sharing a vertex or an edge allowed exactly that) to check_mesh.
     internal::Checked_mesh checked;
     Mesh_report report = options_.check_self_intersections
-                             ? internal::check_solid<Check_kernel>(*mesh_[m], {}, checked, options_.threads)
-                             : internal::check_mesh<Check_kernel>(*mesh_[m], {}, checked.topology);
+                             ? internal::check_solid<Operand_check_kernel>(*mesh_[m], {}, checked, options_.threads)
+                             : internal::check_mesh<Operand_check_kernel>(*mesh_[m], {}, checked.topology);
     if (!report.is_valid()) throw Invalid_operand(name, std::move(report.issues));
     opposite_[m] = std::move(checked.topology).take_opposites();
     if (m == 1) bvh_b_ = std::move(checked.bvh);
@@ -167,13 +175,26 @@ class Boolean_engine {
   // ---- points -----------------------------------------------------------------
 
   std::array<P, 3> triangle(const Mesh& m, Index f) const {
-    const auto p = k_.construct_point_3_object();
-    std::array<P, 3> t;
-    for (int i = 0; i < 3; ++i) {
-      const Point_3<double>& v = m.vertices[m.faces[f][i]];
-      t[i] = p(v.x, v.y, v.z);
+    const Triangle& t = m.faces[f];
+    if constexpr (exact_operands) {
+      return {m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]};
+    } else {
+      const auto p = k_.construct_point_3_object();
+      std::array<P, 3> corners;
+      for (int i = 0; i < 3; ++i) {
+        const Point_3<double>& v = m.vertices[t[i]];
+        corners[i] = p(v.x, v.y, v.z);
+      }
+      return corners;
     }
-    return t;
+  }
+  // Vertex v of operand m in doubles: itself, or an exact point's
+  // approximation (for choices that any answer keeps correct).
+  Point_3<double> vertex_in_doubles(int m, Index v) const {
+    if constexpr (exact_operands)
+      return points_.approximation(offset_[m] + v).point;
+    else
+      return mesh_[m]->vertices[v];
   }
 
   // Global points: A's vertices, then B's, then the new ones (points_ makes
@@ -386,9 +407,10 @@ class Boolean_engine {
       if (opposite_[m].size() == halfedges) continue;  // kept from this Boolean's check
       // Operands certified before (a chain's earlier result, a Valid_solid)
       // bring their opposites with the certificate; others are built here.
-      const std::vector<Index>* carried = options_.certified_operands.covers(*mesh_[0], *mesh_[1])
-                                              ? options_.certified_operands.opposites(m)
-                                              : nullptr;
+      const std::vector<Index>* carried = nullptr;
+      if constexpr (!exact_operands)
+        if (options_.certified_operands.covers(*mesh_[0], *mesh_[1]))
+          carried = options_.certified_operands.opposites(m);
       if (carried && carried->size() == halfedges) opposite_[m] = *carried;
       else opposite_[m] = Mesh_topology::build(*mesh_[m]).take_opposites();
     }
@@ -425,7 +447,7 @@ class Boolean_engine {
       constraints(1, s.fb).segments.push_back({a, b});
     }
     curves_.finish(points_.size());
-    Face_triangulator<K, Point_table<K>> triangulator(k_, points_);
+    Face_triangulator<K, Point_table<K, OP>> triangulator(k_, points_);
     triangulator.set_delaunay(options_.delaunay_retriangulation);
     for (int m = 0; m < 2; ++m) {
       const Mesh& mesh = *mesh_[m];
@@ -475,11 +497,9 @@ class Boolean_engine {
   // degenerate face, unchecked operands, an undecided kernel) the first is
   // returned and the triangulation reports it.
   int projection_axis(int m, Index f) const {
-    const Mesh& mesh = *mesh_[m];
-    const Triangle& t = mesh.faces[f];
-    const Point_3<double>& a = mesh.vertices[t[0]];
-    const Point_3<double>& b = mesh.vertices[t[1]];
-    const Point_3<double>& c = mesh.vertices[t[2]];
+    const Triangle& t = mesh_[m]->faces[f];
+    const Point_3<double> a = vertex_in_doubles(m, t[0]), b = vertex_in_doubles(m, t[1]),
+                          c = vertex_in_doubles(m, t[2]);
     const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
     const double n[3] = {std::abs(uy * vz - uz * vy), std::abs(uz * vx - ux * vz), std::abs(ux * vy - uy * vx)};
     const int first = n[0] >= n[1] && n[0] >= n[2] ? 0 : (n[1] >= n[2] ? 1 : 2);
@@ -609,14 +629,21 @@ class Boolean_engine {
 
   std::optional<Piece_label> ray_label(int m, Index t) {
     const Mesh& other = *mesh_[1 - m];
+    // q lies above the other operand: an exact point's approximation is
+    // within a relative 2^-52 of it, far below the lift.
     double zmax = -std::numeric_limits<double>::infinity();
-    for (const auto& v : other.vertices) zmax = std::max(zmax, v.z);
+    for (Index v = 0; v < other.vertices.size(); ++v) zmax = std::max(zmax, vertex_in_doubles(1 - m, v).z);
     const auto point = k_.construct_point_3_object();
     const Index first = offset_[m], last = offset_[m] + static_cast<Index>(mesh_[m]->vertices.size());
     for (Index v : pieces_[m].triangles[t]) {
       if (v < first || v >= last) continue;  // not an input vertex of this operand
-      const Point_3<double>& pv = mesh_[m]->vertices[v - first];
-      const P p = point(pv.x, pv.y, pv.z);
+      const Point_3<double> pv = vertex_in_doubles(m, v - first);
+      const P p = [&] {
+        if constexpr (exact_operands)
+          return mesh_[m]->vertices[v - first];
+        else
+          return point(pv.x, pv.y, pv.z);
+      }();
       for (int attempt = 0; attempt < 8; ++attempt) {
         const double lift = std::max(1.0, std::abs(zmax)) * (2 + attempt);
         const P q = point(pv.x + attempt * 0.37 * lift, pv.y + attempt * 0.61 * lift, zmax + lift);
@@ -680,8 +707,10 @@ class Boolean_engine {
   void assemble(Result& r) {
     // Output vertices: the input vertices kept, then the new ones (so that
     // only the new ones need the kernel's points), each numbered on first use.
+    // Exact operands' vertices are not doubles: all are "new", rounded, and
+    // kept as K's points (first_new_vertex 0).
     std::vector<Index> new_index(points_.size(), invalid_index);
-    const Index inputs = points_.input_count();
+    const Index inputs = exact_operands ? 0 : points_.input_count();
     Index next_input = 0, next_new = 0;
     const auto use = [&](Index g) {
       Index& n = new_index[g];
@@ -689,7 +718,7 @@ class Boolean_engine {
         if (g < inputs) {
           n = next_input++;
           const int m = g < offset_[1] ? 0 : 1;
-          r.mesh.vertices[n] = mesh_[m]->vertices[g - offset_[m]];
+          if constexpr (!exact_operands) r.mesh.vertices[n] = mesh_[m]->vertices[g - offset_[m]];
         } else {
           n = r.first_new_vertex + next_new++;
           const Approximate_point_3& a = points_.approximation(g);
@@ -740,8 +769,9 @@ class Boolean_engine {
   // The operands are certified valid solids: checked here (the exact
   // self-intersection test included) or by relgeo before (Valid_solid, csg).
   bool operands_certified() const {
-    return options_.certified_operands.covers(*mesh_[0], *mesh_[1]) ||
-           (options_.check_operands && options_.check_self_intersections);
+    if constexpr (!exact_operands)
+      if (options_.certified_operands.covers(*mesh_[0], *mesh_[1])) return true;
+    return options_.check_operands && options_.check_self_intersections;
   }
 
   // validate_solid on the output's doubles, under the exact predicates
@@ -751,8 +781,13 @@ class Boolean_engine {
   // (Boolean_output::halfedge_opposites): its next Boolean reuses them.
   void validate(Result& r) const {
     Mesh_topology topology;
-    if (!operands_certified()) {
+    const auto without_certificates = [&] {
       r.validation = internal::validate_solid(r.mesh, Check_kernel{}, options_.validation, nullptr, &topology);
+    };
+    if constexpr (exact_operands) {
+      without_certificates();  // every face of exact operands is rounded: none is kept unchanged
+    } else if (!operands_certified()) {
+      without_certificates();
     } else {
       const Certified_faces certified = unchanged_operand_faces(r);
       r.counts.unchanged_certified_faces = static_cast<std::size_t>(
@@ -904,7 +939,7 @@ class Boolean_engine {
   const K& k_;
   Boolean_options options_;
   std::array<Index, 2> offset_{};
-  Point_table<K> points_;
+  Point_table<K, OP> points_;
   Union_find<Index> equal_points_;
   std::vector<Located_point> located_;
   std::unordered_map<Cell_pair, Index, Cell_pair_hash> point_of_cells_;
@@ -943,6 +978,38 @@ Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangl
     }
   }
   return internal::Boolean_engine<K>(a, b, op, k, options).run();
+}
+
+/// \brief The Boolean of two solids whose vertices are K's exact points:
+/// one step of an exact chain, whose results stay exact and are rounded once
+/// at the end (doc/boolean.md, "Exact chains"). The engine, the options and
+/// the result are those of the Boolean on doubles, except:
+/// - the operand checks decide under K (exactly, on K's points);
+/// - every output vertex is rounded (first_new_vertex is 0, and
+///   new_vertex_points holds every vertex's exact point);
+/// - use_double_point_kernel does not apply.
+/// exact_operand() makes a mesh of doubles one. The result's exact_mesh() is
+/// the next step's operand (run the steps with
+/// Output_rounding::nearest, which keeps the exact faces; the last one with
+/// the rounding wanted in doubles). Coordinates grow with every step: see the
+/// documentation for the cost.
+/// \throws Invalid_operand as the Boolean on doubles does.
+template <ExactChainingKernel K>
+Boolean_result<K> boolean(const Triangle_mesh<typename K::Point_3>& a, const Triangle_mesh<typename K::Point_3>& b,
+                          Boolean_operation op, const K& k, const Boolean_options& options = {}) {
+  return internal::Boolean_engine<K, typename K::Point_3>(a, b, op, k, options).run();
+}
+
+/// A mesh of doubles as a mesh of K's points (exactly: every double is a
+/// rational): an operand of an exact chain.
+template <ExactChainingKernel K>
+Triangle_mesh<typename K::Point_3> exact_operand(const Triangle_mesh<Point_3<double>>& m, const K& k) {
+  Triangle_mesh<typename K::Point_3> e;
+  e.faces = m.faces;
+  e.vertices.reserve(m.vertices.size());
+  const auto point = k.construct_point_3_object();
+  for (const Point_3<double>& v : m.vertices) e.vertices.push_back(point(v.x, v.y, v.z));
+  return e;
 }
 
 }  // namespace relgeo

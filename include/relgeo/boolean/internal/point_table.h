@@ -13,9 +13,13 @@
 // point on an edge lies on three faces), and so does the output, and a
 // certified kernel's approximation of a point of a sliver face can take
 // exact arithmetic (a quarter of a gear's Boolean, recomputed).
+//
+// The operands' vertices are doubles (OP = Point_3<double>), or the kernel's
+// own points (OP = K::Point_3: an exact chain's earlier results).
 #pragma once
 
 #include <array>
+#include <concepts>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -25,11 +29,11 @@
 
 namespace relgeo::internal {
 
-template <class K>
+template <class K, class OP = Point_3<double>>
 class Point_table {
  public:
   using IP = typename K::Implicit_point_3;
-  using Mesh = Triangle_mesh<Point_3<double>>;
+  using Mesh = Triangle_mesh<OP>;
 
   Point_table(const K& k, std::array<const Mesh*, 2> meshes)
       : meshes_(meshes),
@@ -70,8 +74,11 @@ class Point_table {
 
   [[gnu::noinline]] const IP& load(Index g) const {
     const std::size_t in_a = meshes_[0]->vertices.size();
-    const Point_3<double>& v = g < in_a ? meshes_[0]->vertices[g] : meshes_[1]->vertices[g - in_a];
-    slot_[g] = hold(implicit_(point_(v.x, v.y, v.z)));
+    const OP& v = g < in_a ? meshes_[0]->vertices[g] : meshes_[1]->vertices[g - in_a];
+    if constexpr (std::same_as<OP, Point_3<double>>)
+      slot_[g] = hold(implicit_(point_(v.x, v.y, v.z)));
+    else
+      slot_[g] = hold(implicit_(v));
     return row(slot_[g]);
   }
   Index hold(IP&& p) const {

@@ -1,0 +1,142 @@
+// Exact chains (issue 28, item 3): Booleans whose operands are meshes of an
+// exact kernel's points, so that a chain of Booleans keeps every
+// intermediate exact and rounds once at the end. The exact results do not
+// depend on how a solid was reached; the rounded ones do.
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "boolean_chains.h"
+#include "relgeo/boolean.h"
+#include "relgeo/mesh/solid_validation.h"
+#include "support/soundness_data.h"
+
+namespace relgeo::test {
+namespace {
+
+using Op = Boolean_operation;
+using Exact_mesh = Triangle_mesh<Exact_kernel::Point_3>;
+
+// The exact signed volume of a mesh of doubles or of rationals.
+template <class P>
+mpq_class exact_volume(const Triangle_mesh<P>& m) {
+  const Solid_report v = validate_solid(m, typename Kernel_for_point<Certified_kernel_for_number, P>::type{},
+                                        Solid_validation_options{.exact_volume_string = true});
+  return mpq_class(v.volume.exact_value);
+}
+
+Boolean_options nearest() {
+  Boolean_options o;
+  o.rounding = Output_rounding::nearest;
+  return o;
+}
+
+// The exact points of a mesh, sorted (to compare two results' vertex sets).
+std::vector<Point_3<mpq_class>> sorted_points(const Exact_mesh& m) {
+  std::vector<Point_3<mpq_class>> p = m.vertices;
+  std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) {
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    return a.z < b.z;
+  });
+  return p;
+}
+
+// The same two solids as doubles and as rationals: the same exact result
+// (its vertices and volume), and from exact operands every output vertex is
+// rounded and known exactly.
+TEST(ExactChain, ExactOperandsGiveTheResultOfTheSameSolidsInDoubles) {
+  const Mesh_double a = torus(1, 0.3, 24, 12), b = rigidly_moved(icosphere(2), 0.3, 0.2, {0, 0, 0.05});
+  const Exact_mesh ea = exact_operand(a, Exact_kernel{}), eb = exact_operand(b, Exact_kernel{});
+  for (const Op op : {Op::union_of, Op::intersection, Op::difference}) {
+    const auto from_doubles = boolean(a, b, op, Exact_kernel{}, nearest());
+    const auto from_exact = boolean(ea, eb, op, Exact_kernel{}, nearest());
+    ASSERT_TRUE(from_doubles.ok()) << from_doubles.failure;
+    ASSERT_TRUE(from_exact.ok()) << from_exact.failure;
+    EXPECT_EQ(from_exact.first_new_vertex, 0u);
+    EXPECT_EQ(from_exact.new_vertex_points.size(), from_exact.mesh.vertices.size());
+    EXPECT_EQ(from_exact.mesh.faces.size(), from_doubles.mesh.faces.size()) << to_string(op);
+    const Exact_mesh x = from_exact.exact_mesh(), y = from_doubles.exact_mesh();
+    EXPECT_TRUE(sorted_points(x) == sorted_points(y)) << to_string(op);
+    EXPECT_EQ(exact_volume(x), exact_volume(y)) << to_string(op);
+    EXPECT_TRUE(validate_solid(x, Exact_kernel{}).is_valid_solid()) << to_string(op);
+    // Each vertex in doubles within rounding_error of its exact point.
+    const mpq_class bound(from_exact.rounding_error);
+    for (Index v = 0; v < x.vertices.size(); ++v) {
+      const Point_3<double>& d = from_exact.mesh.vertices[v];
+      const Point_3<mpq_class>& e = x.vertices[v];
+      EXPECT_LE(abs(mpq_class(d.x) - e.x), bound);
+      EXPECT_LE(abs(mpq_class(d.y) - e.y), bound);
+      EXPECT_LE(abs(mpq_class(d.z) - e.z), bound);
+    }
+  }
+}
+
+// One solid reached two ways: a sphere minus three prisms one after the
+// other, and the sphere minus the union of the prisms (which cross each
+// other at its centre). Kept exact, both chains end on one exact volume.
+// Rounded at every step (the default chain), they do not: each rounds other
+// intermediate solids. The test fails on a chain that rounds.
+TEST(ExactChain, OneSolidReachedTwoWaysHasOneExactVolume) {
+  const Boolean_chain c = make_chain(Chain_family::drilled_sphere, 3, 7, 2);
+  const Exact_kernel k;
+  // Exact: ((S - P1) - P2) - P3 and S - ((P1 u P2) u P3).
+  Exact_mesh one_by_one = exact_operand(c.start, k), prisms = exact_operand(c.steps[0].second, k);
+  for (std::size_t i = 0; i < c.steps.size(); ++i) {
+    const auto r = boolean(one_by_one, exact_operand(c.steps[i].second, k), Op::difference, k, nearest());
+    ASSERT_TRUE(r.ok()) << r.failure;
+    one_by_one = r.exact_mesh();
+    if (i == 0) continue;
+    const auto u = boolean(prisms, exact_operand(c.steps[i].second, k), Op::union_of, k, nearest());
+    ASSERT_TRUE(u.ok()) << u.failure;
+    prisms = u.exact_mesh();
+  }
+  const auto at_once = boolean(exact_operand(c.start, k), prisms, Op::difference, k, nearest());
+  ASSERT_TRUE(at_once.ok()) << at_once.failure;
+  const mpq_class v = exact_volume(one_by_one);
+  EXPECT_EQ(v, exact_volume(at_once.exact_mesh()));
+  EXPECT_GT(v, 0);
+  // Rounded at every step (the default options), the two ways part.
+  Mesh_double rounded = c.start, rounded_prisms = c.steps[0].second;
+  for (std::size_t i = 0; i < c.steps.size(); ++i) {
+    const auto r = boolean(rounded, c.steps[i].second, Op::difference);
+    ASSERT_TRUE(r.ok()) << r.failure;
+    rounded = operand_of(r.mesh);
+    if (i == 0) continue;
+    const auto u = boolean(rounded_prisms, c.steps[i].second, Op::union_of);
+    ASSERT_TRUE(u.ok()) << u.failure;
+    rounded_prisms = operand_of(u.mesh);
+  }
+  const auto rounded_at_once = boolean(c.start, rounded_prisms, Op::difference);
+  ASSERT_TRUE(rounded_at_once.ok()) << rounded_at_once.failure;
+  EXPECT_NE(exact_volume(rounded), exact_volume(rounded_at_once.mesh));
+}
+
+TEST(ExactChain, TheExactMeshIsRefusedWhereItIsNotTheExactResult) {
+  // A failed Boolean: a repair allowed no round, which the rounding of
+  // this union needs (the insertion order's triangulation).
+  Boolean_options no_repair;
+  no_repair.repair.max_rounds = 0;
+  no_repair.delaunay_retriangulation = false;
+  const auto failed = boolean(torus(1, 0.3, 24, 12), rigidly_moved(icosphere(2), 0.3, 0.2, {0, 0, 0.05}), Op::union_of,
+                              Exact_kernel{}, no_repair);
+  ASSERT_FALSE(failed.ok());
+  EXPECT_THROW((void)failed.exact_mesh(), Precondition_violation);
+  // A repair that only moved vertices keeps the exact faces; one that
+  // flipped or collapsed edges (marked here on a copy) changed them.
+  Boolean_options repaired;
+  repaired.delaunay_retriangulation = false;
+  auto moved = boolean(torus(1, 0.3, 24, 12), rigidly_moved(icosphere(2), 0.3, 0.2, {0, 0, 0.05}), Op::union_of,
+                       Exact_kernel{}, repaired);
+  ASSERT_TRUE(moved.ok()) << moved.failure;
+  ASSERT_GT(moved.rounding.moved_vertices, 0u);
+  EXPECT_NO_THROW((void)moved.exact_mesh());
+  moved.rounding.flips = 1;
+  EXPECT_THROW((void)moved.exact_mesh(), Precondition_violation);
+}
+
+}  // namespace
+}  // namespace relgeo::test

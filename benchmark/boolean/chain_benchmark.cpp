@@ -10,11 +10,20 @@
 //                         triangulation: the engine before issue 28
 //   CGAL Epick            corefine_and_compute_* on Surface_mesh<Epick>
 //   CGAL Epeck            the same on Surface_mesh<Epeck> (kept exact in memory)
+// and, over the chains' first --exact_steps steps (default 6; exact
+// intermediates cost more with every step), the rows "(N steps)":
+//   relgeo csg            as above
+//   relgeo csg exact      relgeo::csg with Csg_intermediates::exact under
+//                         Exact_kernel (GMP rationals), the root rounded once
+//   relgeo csg exact Epeck  the same under Cgal_kernel<CGAL::Epeck>
+//   CGAL Epeck            as above
 // A chain stops at a step that fails or refuses its operand. Counters: steps
 // completed, the final face count, its smallest angle (degrees) and faces
 // with an angle under one degree, and whether the final mesh is a valid
-// solid (relgeo's exact validation, outside the timing).
-// Usage: relgeo_chain_benchmark [--levels=N] [google-benchmark flags].
+// solid (relgeo's exact validation, outside the timing); the exact rows'
+// label lists each step's coordinate size in bits (Exact_kernel) and time.
+// Usage: relgeo_chain_benchmark [--levels=N] [--exact_steps=N]
+// [google-benchmark flags].
 // --export_chains=DIR writes each chain's operands as DIR/FAMILY.json
 // ({"start": MESH, "steps": [{"op", "mesh": MESH}]}, MESH = {"v": [x, y, z,
 // ...], "f": [i, j, k, ...]}) and exits: the input of manifold_chains.mjs,
@@ -23,12 +32,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <string>
 
 #include "boolean/boolean_chains.h"
 #include "relgeo/boolean.h"
+#include "relgeo/kernel/cgal_kernel.h"
 #include "relgeo/mesh/cgal_conversion.h"
 #include "relgeo/mesh/solid_validation.h"
 #include "relgeo_fixtures/peers/cgal_corefinement.h"
@@ -40,10 +51,12 @@ using relgeo::test::Boolean_chain;
 using relgeo::test::Chain_family;
 
 int sphere_levels = 3;
+int exact_steps = 6;
 
 struct Chain_outcome {
   int steps = 0;
   Mesh_double mesh;
+  std::string label;  // per step: coordinate bits and seconds (exact intermediates)
 };
 
 // The smallest interior angle of face t, in degrees.
@@ -82,6 +95,23 @@ Chain_outcome run_csg(const Boolean_chain& c) {
   const Csg_result r = csg(relgeo::test::csg_tree(c), Filtered_exact_kernel{}, options);
   return {static_cast<int>(std::count_if(r.steps.begin(), r.steps.end(), [](const Csg_step& s) { return s.ok; })),
           r.mesh};
+}
+
+template <class K>
+Chain_outcome run_csg_exact(const Boolean_chain& c) {
+  Csg_options options;
+  options.intermediates = Csg_intermediates::exact;
+  const Csg_result r = csg(relgeo::test::csg_tree(c), K{}, options);
+  Chain_outcome o{static_cast<int>(std::count_if(r.steps.begin(), r.steps.end(), [](const Csg_step& s) { return s.ok; })),
+                  r.ok() ? r.mesh : Mesh_double{}};
+  char buf[64];
+  for (const Csg_step& s : r.steps) {
+    if (!o.label.empty()) o.label += ", ";
+    if (s.coordinate_bits) std::snprintf(buf, sizeof buf, "%zu bits %.2f s", s.coordinate_bits, s.seconds);
+    else std::snprintf(buf, sizeof buf, "%.2f s", s.seconds);
+    o.label += buf;
+  }
+  return o;
 }
 
 template <bool Delaunay>
@@ -124,12 +154,13 @@ Chain_outcome run_cgal(const Boolean_chain& c) {
   return {steps, from_surface_mesh<Point_3<double>>(current)};
 }
 
-template <Chain_outcome (*Run)(const Boolean_chain&)>
+template <Chain_outcome (*Run)(const Boolean_chain&), bool Short = false>
 void chain(benchmark::State& state, Chain_family family) {
-  const Boolean_chain c = relgeo::test::make_chain(family, 24, 7, sphere_levels);
+  const Boolean_chain c = relgeo::test::make_chain(family, Short ? exact_steps : 24, 7, sphere_levels);
   Chain_outcome o;
   for (auto _ : state) o = Run(c);
   report(state, o);
+  if (!o.label.empty()) state.SetLabel(o.label);
 }
 
 void register_all() {
@@ -143,6 +174,15 @@ void register_all() {
              {"CGAL Epick", &chain<&run_cgal<CGAL::Epick>>},
              {"CGAL Epeck", &chain<&run_cgal<CGAL::Epeck>>}})
       benchmark::RegisterBenchmark((name + "/" + subject).c_str(), fn, f)->Unit(benchmark::kSecond)->Iterations(1);
+    const std::string steps = " (" + std::to_string(exact_steps) + " steps)";
+    for (auto [subject, fn] : std::initializer_list<std::pair<const char*, void (*)(benchmark::State&, Chain_family)>>{
+             {"relgeo csg", &chain<&run_csg<true>, true>},
+             {"relgeo csg exact", &chain<&run_csg_exact<Exact_kernel>, true>},
+             {"relgeo csg exact Epeck", &chain<&run_csg_exact<Cgal_kernel<CGAL::Epeck>>, true>},
+             {"CGAL Epeck", &chain<&run_cgal<CGAL::Epeck>, true>}})
+      benchmark::RegisterBenchmark((name + "/" + subject + steps).c_str(), fn, f)
+          ->Unit(benchmark::kSecond)
+          ->Iterations(1);
   }
 }
 
@@ -184,6 +224,7 @@ int export_chains(const std::string& dir) {
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::strncmp(argv[i], "--levels=", 9) == 0) sphere_levels = std::atoi(argv[i] + 9);
+    else if (std::strncmp(argv[i], "--exact_steps=", 14) == 0) exact_steps = std::atoi(argv[i] + 14);
   for (int i = 1; i < argc; ++i)
     if (std::strncmp(argv[i], "--export_chains=", 16) == 0) return export_chains(argv[i] + 16);
   benchmark::Initialize(&argc, argv);

@@ -242,7 +242,7 @@ def _csg_document(node, arrays):
 
 
 def csg(tree, kernel=DEFAULT_KERNEL, rounding="repaired", retriangulation="delaunay", check_self_intersections=True,
-        base=None):
+        base=None, intermediates="rounded"):
     """Evaluates a CSG tree of closed triangle meshes (``relgeo csg``).
 
     tree: the path of a TREE.json file (its mesh files relative to its
@@ -251,21 +251,24 @@ def csg(tree, kernel=DEFAULT_KERNEL, rounding="repaired", retriangulation="delau
     (a difference is its first argument minus all the others) or a leaf:
     ``{"mesh": "file.off"}`` (relative to ``base``, default the current
     folder), a pair ``(V, F)`` of arrays, or ``{"vertices": V, "faces": F}``.
-    Kernels: "filtered" (default), "exact", "double".
+    Kernels: "filtered" (default), "exact", "double". intermediates:
+    "rounded" (default: every result rounded to doubles and repaired) or
+    "exact" (with kernel="exact": every result kept in exact rationals, the
+    root rounded once; slower with every step).
 
     Returns a dict: the root's solid ``V``, ``F`` (the last valid result when
     a step failed) and the fields of ``relgeo csg --format json``: tree (the
-    file; absent for a dict), kernel, status ("ok" or "failed"), failure,
-    steps [{node, operation, ok, failure, faces, volume, validation,
-    rounding, seconds}], output {vertices, faces, volume}, seconds,
-    total_seconds. Raises ``InvalidCsgNode`` (an ``InvalidInput``, a
+    file; absent for a dict), kernel, intermediates, status ("ok" or
+    "failed"), failure, steps [{node, operation, ok, failure, faces, volume,
+    validation, rounding, coordinate_bits, seconds}], output {vertices,
+    faces, volume, rounding, validation}, seconds, total_seconds. Raises ``InvalidCsgNode`` (an ``InvalidInput``, a
     ``ValueError``) naming the node (``e.node``: "root.1") for an unknown
     op, fewer than two arguments, a leaf that cannot be read or is not a
     valid solid; ``UnreadableFile`` for a tree file that cannot be read or
     is not JSON; ``ValueError`` for a bad kernel or option name. The GIL is
     released while the tree is read and evaluated.
     """
-    options = (kernel, rounding, retriangulation, check_self_intersections)
+    options = (kernel, rounding, retriangulation, check_self_intersections, intermediates)
     if isinstance(tree, (str, os.PathLike)):
         return _relgeo.csg(os.fspath(tree), None, [], "", *options)
     arrays = []

@@ -46,9 +46,10 @@ void bind_csg(py::module_& m) {
       "csg",
       [](const std::optional<std::string>& file, const std::optional<std::string>& text, const Leaf_arrays& arrays,
          const std::string& base, const std::string& kernel, const std::string& rounding,
-         const std::string& retriangulation, bool check_self_intersections) {
+         const std::string& retriangulation, bool check_self_intersections, const std::string& intermediates) {
         tool::validate_csg_kernel(kernel);  // before any file is read, as the tool
-        const Csg_options options = tool::csg_options(rounding, retriangulation, check_self_intersections);
+        const Csg_options options =
+            tool::csg_options(rounding, retriangulation, check_self_intersections, intermediates, kernel);
         internal::Stopwatch clock;
         Csg_result result;
         {
@@ -65,7 +66,8 @@ void bind_csg(py::module_& m) {
           }
           result = tool::evaluate_csg(kernel, tree, options);
         }
-        auto d = json_to_python(tool::csg_report_json(file.value_or(""), kernel, rounding, result, clock.elapsed()))
+        auto d = json_to_python(tool::csg_report_json(file.value_or(""), kernel, rounding, result, clock.elapsed(),
+                                                      options.intermediates))
                      .cast<py::dict>();
         if (!file) d.attr("pop")("tree");
         const py::tuple mesh = mesh_arrays(result.mesh);
@@ -74,7 +76,7 @@ void bind_csg(py::module_& m) {
         return d;
       },
       py::arg("file"), py::arg("text"), py::arg("arrays"), py::arg("base"), py::arg("kernel"), py::arg("rounding"),
-      py::arg("retriangulation"), py::arg("check_self_intersections"),
+      py::arg("retriangulation"), py::arg("check_self_intersections"), py::arg("intermediates"),
       "The tool's `csg` on a TREE.json file, or on the tree's JSON `text` whose leaves {\"mesh\": {\"arrays\": k}} "
       "are arrays[k] = (V, F) and whose files are relative to `base`: the record of `relgeo csg --format json` "
       "with the root's mesh as V, F.");

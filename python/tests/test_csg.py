@@ -12,7 +12,7 @@ from conftest import TESTDATA
 CSG = TESTDATA / "csg"
 
 # The record's fields that do not depend on timing (steps without their seconds).
-FIELDS = ["kernel", "status", "failure", "output"]
+FIELDS = ["kernel", "intermediates", "status", "failure", "output"]
 
 
 def untimed_steps(record):
@@ -72,6 +72,18 @@ def test_rounding_and_options_reach_the_tool(tool, tmp_path):
                      check_self_intersections=False)
     assert_same(got, expected, mesh)
     assert {step["rounding"]["method"] for step in got["steps"]} == {"nearest"}
+
+
+def test_exact_intermediates_match_the_tool(tool, tmp_path):
+    expected, mesh = tool_csg(tool, tmp_path, CSG / "exact_slab.json", "exact", "--intermediates", "exact")
+    got = relgeo.csg(CSG / "exact_slab.json", kernel="exact", intermediates="exact")
+    assert_same(got, expected, mesh)
+    assert got["intermediates"] == "exact" and got["output"]["validation"] == "valid solid"
+    bits = [step["coordinate_bits"] for step in got["steps"]]
+    assert len(bits) == 3 and bits[0] > 53 and bits[-1] >= bits[0]
+    with pytest.raises(ValueError) as e:
+        relgeo.csg(CSG / "exact_slab.json", intermediates="exact")
+    assert str(e.value) == tool.error("csg", CSG / "exact_slab.json", "--intermediates", "exact")
 
 
 def test_volume_of_the_cubes_tree():

@@ -158,7 +158,8 @@ TEST(BooleanCgalOracle, AnExactChainEndsOnTheExactVolumeOfCgalsExactChain) {
   const Boolean_options nearest{.rounding = Output_rounding::nearest};
   Csg_options exact_intermediates;
   exact_intermediates.intermediates = Csg_intermediates::exact;
-  for (const Chain_family family : {Chain_family::drilled_sphere, Chain_family::fused_spheres, Chain_family::slab_and_boxes}) {
+  for (const Chain_family family :
+       {Chain_family::drilled_sphere, Chain_family::fused_spheres, Chain_family::slab_and_boxes}) {
     const std::string name(to_string(family));
     const Boolean_chain c = make_chain(family, 4, 7, 2);
     Surface cgal_exact = to_surface(c.start);

@@ -17,6 +17,17 @@ relgeo_tool_test(csg_open_leaf 2 ARGS csg ${_csg}/bad_open_leaf.json
 relgeo_tool_test(csg_not_json 2 ARGS csg ${_csg}/bad_not_json.json STDERR_MATCHES "not JSON")
 relgeo_tool_test(csg_no_tree 2 ARGS csg)
 relgeo_tool_test(csg_bad_kernel 2 ARGS csg ${_csg}/cubes.json --kernel interval STDERR_MATCHES "filtered, exact, double")
+# Exact intermediates: the slab chain's first three steps kept in rationals
+# (their coordinates' bits reported), the root rounded once; only under the
+# exact kernel.
+relgeo_tool_test(csg_exact_intermediates 0
+  ARGS csg ${_csg}/exact_slab.json --kernel exact --intermediates exact --output ${_tmp}/csg_exact_slab.off
+  STDOUT_MATCHES "step 3 +root" "-bit coordinates +valid solid" "rounding +the exact root to doubles.*valid solid"
+                 "status +ok" FILES ${_tmp}/csg_exact_slab.off)
+relgeo_tool_test(csg_exact_intermediates_filtered 2 ARGS csg ${_csg}/exact_slab.json --intermediates exact
+  STDERR_MATCHES "needs --kernel exact, not filtered")
+relgeo_tool_test(csg_bad_intermediates 2 ARGS csg ${_csg}/cubes.json --intermediates lazy
+  STDERR_MATCHES "'lazy' is not one of rounded, exact")
 # The three 24-step chains of test/boolean/boolean_chains.h as trees (the
 # drilled sphere and the slab at level 3, the fused spheres at level 2): every
 # step a valid solid (exit 1 otherwise).

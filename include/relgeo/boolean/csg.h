@@ -257,8 +257,14 @@ class Csg_evaluator {
     if (options_.boolean.check_operands && options_.boolean.check_self_intersections && inner_.validate_output)
       options.certified_operands = Operand_certificate(&a, &b, pa.opposites.get(), pb.opposites.get());
     auto r = boolean(a, b, op, k_, options);
-    Csg_step s{path, kind, r.ok(), r.failure, r.mesh.faces.size(), r.validation.volume.value,
-               r.validation.summary(), r.rounding, 0, 0};
+    Csg_step s{.node = path,
+               .operation = kind,
+               .ok = r.ok(),
+               .failure = r.failure,
+               .faces = r.mesh.faces.size(),
+               .volume = r.validation.volume.value,
+               .validation = r.validation.summary(),
+               .rounding = r.rounding};
     if (s.ok && inner_.validate_output && !r.validation.is_valid_solid()) {
       s.ok = false;
       s.failure = "the result is not a valid solid: " + s.validation;
@@ -362,7 +368,12 @@ class Exact_csg_evaluator {
   Part step(const Part& a, const Part& b, Csg_node::Kind kind, const std::string& path) {
     internal::Stopwatch clock;
     auto r = boolean(*a, *b, boolean_operation(kind), k_, step_options_);
-    Csg_step s{path, kind, r.ok(), r.failure, r.mesh.faces.size(), 0, {}, r.rounding, 0, 0};
+    Csg_step s{.node = path,
+               .operation = kind,
+               .ok = r.ok(),
+               .failure = r.failure,
+               .faces = r.mesh.faces.size(),
+               .rounding = r.rounding};
     Part out;
     if (s.ok) {
       auto exact = std::make_shared<const Exact_mesh>(r.exact_mesh());
@@ -370,8 +381,12 @@ class Exact_csg_evaluator {
       s.volume = v.volume.value;
       s.validation = v.summary();
       s.coordinate_bits = coordinate_bits(*exact);
-      if (v.is_valid_solid()) out = std::move(exact);
-      else s.ok = false, s.failure = "the exact result is not a valid solid: " + s.validation;
+      if (v.is_valid_solid()) {
+        out = std::move(exact);
+      } else {
+        s.ok = false;
+        s.failure = "the exact result is not a valid solid: " + s.validation;
+      }
     }
     s.seconds = clock.elapsed();
     result_.steps.push_back(s);

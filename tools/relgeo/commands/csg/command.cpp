@@ -25,7 +25,13 @@ std::string report_text(const Csg_result& r) {
     s << buf;
     if (st.rounding.defects_before)
       s << "  (rounding: " << st.rounding.defects_before << " defects repaired)";
+    if (st.coordinate_bits) s << "  " << st.coordinate_bits << "-bit coordinates";
     s << "  " << st.validation << "\n";
+  }
+  if (!r.validation.empty()) {  // exact intermediates: the root rounded once
+    s << "rounding         the exact root to doubles";
+    if (r.rounding.defects_before) s << ", " << r.rounding.defects_before << " defects repaired";
+    s << ": " << r.validation << "\n";
   }
   s << "status           " << (r.ok() ? "ok" : "failed: " + r.failure) << "\n";
   s << "output           " << r.mesh.vertices.size() << " vertices, " << r.mesh.faces.size() << " faces\n";
@@ -40,11 +46,12 @@ int run_csg_command(const Csg_command_options& o, Streams io) {
   if (o.tree.empty()) throw Usage_error("a tree is needed: relgeo csg TREE.json");
   validate_csg_kernel(o.kernel);  // before any file is read
   internal::Stopwatch clock;
-  const Csg_options options = csg_options(o.rounding, o.retriangulation, !o.skip_self_intersection_check);
+  const Csg_options options =
+      csg_options(o.rounding, o.retriangulation, !o.skip_self_intersection_check, o.intermediates, o.kernel);
   const Csg_node tree = parse_csg_tree(o.tree);
   const Csg_result r = evaluate_csg(o.kernel, tree, options);
   if (!o.output.empty()) write_mesh(o.output, r.mesh);
-  const io::Json json = csg_report_json(o.tree, o.kernel, o.rounding, r, clock.elapsed());
+  const io::Json json = csg_report_json(o.tree, o.kernel, o.rounding, r, clock.elapsed(), options.intermediates);
   if (!o.report.empty()) {
     std::ofstream f(o.report);
     f << io::dump_json(json) << '\n';

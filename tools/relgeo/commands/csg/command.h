@@ -20,6 +20,7 @@ struct Csg_command_options {
   std::string report;             ///< JSON report file, empty for none
   std::string rounding = "repaired";
   std::string retriangulation = "delaunay";
+  std::string intermediates = "rounded";
   bool skip_self_intersection_check = false;
   Format format = Format::text;
 };

@@ -22,8 +22,11 @@ void validate_csg_kernel(const std::string& name);
 Csg_result evaluate_csg(const std::string& kernel, const Csg_node& tree, const Csg_options& options);
 
 /// The options of `relgeo csg --rounding R --retriangulation T
-/// [--skip-self-intersection-check]`. \throws Usage_error for a bad name.   [tree.cpp]
-Csg_options csg_options(const std::string& rounding, const std::string& retriangulation, bool check_self_intersections);
+/// --intermediates I [--skip-self-intersection-check]` under `kernel`.
+/// \throws Usage_error for a bad name, and for exact intermediates under a
+/// kernel other than exact (before any file is read).   [tree.cpp]
+Csg_options csg_options(const std::string& rounding, const std::string& retriangulation, bool check_self_intersections,
+                        const std::string& intermediates, const std::string& kernel);
 
 /// The solid of a leaf {"mesh": M}, given M and the leaf's path ("root.1").
 using Csg_leaf_reader = std::function<Csg_node(const io::Json& mesh, const std::string& node)>;
@@ -40,11 +43,13 @@ Csg_node read_csg_mesh_file(const io::Json& mesh, const std::filesystem::path& b
 /// \throws Unreadable_file, io::Parse_error, Invalid_csg_node.
 Csg_node parse_csg_tree(const std::string& json_file);
 
-/// The record of `relgeo csg --format json`: tree, kernel, status, failure,
-/// steps [...], output {vertices, faces, volume}, seconds, total_seconds.
+/// The record of `relgeo csg --format json`: tree, kernel, intermediates,
+/// status, failure, steps [...], output {vertices, faces, volume, rounding,
+/// validation}, seconds, total_seconds.
 /// `rounding` as asked (the double kernel's Booleans round to nearest
 /// whatever it is).                                               [report.cpp]
 io::Json csg_report_json(const std::string& tree, const std::string& kernel, const std::string& rounding,
-                         const Csg_result& result, double total_seconds);
+                         const Csg_result& result, double total_seconds,
+                         Csg_intermediates intermediates = Csg_intermediates::rounded);
 
 }  // namespace relgeo::tool

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli/text.h"
 #include "commands/boolean/facade.h"
 #include "commands/csg/facade.h"
 #include "relgeo/io/text_file.h"
@@ -42,8 +43,17 @@ Csg_node parse_node(const io::Json& j, const Csg_leaf_reader& read_leaf, const s
 }  // namespace
 
 Csg_options csg_options(const std::string& rounding, const std::string& retriangulation,
-                        bool check_self_intersections) {
+                        bool check_self_intersections, const std::string& intermediates, const std::string& kernel) {
   Csg_options options;
+  if (intermediates == "exact") {
+    // (The tool's other kernels compute in doubles: no exact point to keep.)
+    if (kernel != "exact")
+      throw Usage_error("csg: --intermediates exact keeps every result in exact rationals: it needs --kernel exact, not " +
+                        kernel);
+    options.intermediates = Csg_intermediates::exact;
+  } else if (intermediates != "rounded") {
+    throw Usage_error("csg: --intermediates '" + intermediates + "' is not one of rounded, exact");
+  }
   options.boolean.rounding = parse_output_rounding(rounding);
   options.boolean.delaunay_retriangulation = parse_delaunay_retriangulation(retriangulation);
   options.boolean.check_self_intersections = check_self_intersections;

@@ -22,6 +22,9 @@
 // with an angle under one degree, and whether the final mesh is a valid
 // solid (relgeo's exact validation, outside the timing); the exact rows'
 // label lists each step's coordinate size in bits (Exact_kernel) and time.
+// The "(N steps)" rows also give volume_error: the exact volume of their
+// final mesh against that of the chain's exact result (relgeo's exact chain
+// under Exact_kernel, computed once, outside the timing), relative.
 // Usage: relgeo_chain_benchmark [--levels=N] [--exact_steps=N]
 // [google-benchmark flags].
 // --export_chains=DIR writes each chain's operands as DIR/FAMILY.json
@@ -35,6 +38,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include "boolean/boolean_chains.h"
@@ -56,7 +60,7 @@ int exact_steps = 6;
 struct Chain_outcome {
   int steps = 0;
   Mesh_double mesh;
-  std::string label;  // per step: coordinate bits and seconds (exact intermediates)
+  std::string label = {};  // per step: coordinate bits and seconds (exact intermediates)
 };
 
 // The smallest interior angle of face t, in degrees.
@@ -154,6 +158,25 @@ Chain_outcome run_cgal(const Boolean_chain& c) {
   return {steps, from_surface_mesh<Point_3<double>>(current)};
 }
 
+template <class P>
+mpq_class exact_volume(const Triangle_mesh<P>& m) {
+  return mpq_class(validate_solid(m, typename Kernel_for_point<Certified_kernel_for_number, P>::type{},
+                                  Solid_validation_options{.exact_volume_string = true})
+                       .volume.exact_value);
+}
+
+// The exact volume of the chain's exact result: each step on the last
+// step's exact mesh, nothing rounded (once per family).
+const mpq_class& exact_chain_volume(Chain_family family, const Boolean_chain& c) {
+  static std::map<Chain_family, mpq_class> volumes;
+  if (const auto it = volumes.find(family); it != volumes.end()) return it->second;
+  const Exact_kernel k;
+  const Boolean_options nearest{.rounding = Output_rounding::nearest, .validate_output = false};
+  auto exact = exact_operand(c.start, k);
+  for (const auto& [op, m] : c.steps) exact = boolean(exact, exact_operand(m, k), op, k, nearest).exact_mesh();
+  return volumes[family] = exact_volume(exact);
+}
+
 template <Chain_outcome (*Run)(const Boolean_chain&), bool Short = false>
 void chain(benchmark::State& state, Chain_family family) {
   const Boolean_chain c = relgeo::test::make_chain(family, Short ? exact_steps : 24, 7, sphere_levels);
@@ -161,6 +184,10 @@ void chain(benchmark::State& state, Chain_family family) {
   for (auto _ : state) o = Run(c);
   report(state, o);
   if (!o.label.empty()) state.SetLabel(o.label);
+  if (Short && o.steps == exact_steps) {
+    const mpq_class& v = exact_chain_volume(family, c);
+    state.counters["volume_error"] = mpq_class(abs(exact_volume(o.mesh) - v) / abs(v)).get_d();
+  }
 }
 
 void register_all() {

@@ -128,15 +128,15 @@ TEST(Csg, AFailedStepStopsTheTreeAndSaysWhere) {
 // result rounded once, and the coordinates grow with every step (the cost
 // the documentation states).
 TEST(Csg, ExactIntermediatesRoundOnlyTheRoot) {
-  const Boolean_chain c = make_chain(Chain_family::drilled_sphere, 3, 7, 2);
+  const Boolean_chain c = make_chain(Chain_family::drilled_sphere, test_scale() < 1 ? 2 : 3, 7, 2);
   Csg_options o;
   o.intermediates = Csg_intermediates::exact;
   const Csg_result r = csg(csg_tree(c), Exact_kernel{}, o);
   ASSERT_TRUE(r.ok()) << r.failure;
-  ASSERT_EQ(r.steps.size(), 3u);
+  ASSERT_EQ(r.steps.size(), c.steps.size());
   for (const Csg_step& s : r.steps) EXPECT_EQ(s.validation, "valid solid") << s.node;
-  EXPECT_GT(r.steps[0].coordinate_bits, 64u);
-  EXPECT_GT(r.steps[2].coordinate_bits, r.steps[0].coordinate_bits);
+  EXPECT_GT(r.steps.front().coordinate_bits, 64u);
+  EXPECT_GT(r.steps.back().coordinate_bits, r.steps.front().coordinate_bits);
   EXPECT_EQ(r.validation, "valid solid");
   // The same chain by hand: exact Booleans, the last exact mesh rounded.
   Boolean_options nearest;

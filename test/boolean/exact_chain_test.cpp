@@ -81,7 +81,8 @@ TEST(ExactChain, ExactOperandsGiveTheResultOfTheSameSolidsInDoubles) {
 // Rounded at every step (the default chain), they do not: each rounds other
 // intermediate solids. The test fails on a chain that rounds.
 TEST(ExactChain, OneSolidReachedTwoWaysHasOneExactVolume) {
-  const Boolean_chain c = make_chain(Chain_family::drilled_sphere, 3, 7, 2);
+  // (Two prisms in the sanitizer run: exact arithmetic is slow there.)
+  const Boolean_chain c = make_chain(Chain_family::drilled_sphere, test_scale() < 1 ? 2 : 3, 7, 2);
   const Exact_kernel k;
   // Exact: ((S - P1) - P2) - P3 and S - ((P1 u P2) u P3).
   Exact_mesh one_by_one = exact_operand(c.start, k), prisms = exact_operand(c.steps[0].second, k);
@@ -113,6 +114,23 @@ TEST(ExactChain, OneSolidReachedTwoWaysHasOneExactVolume) {
   const auto rounded_at_once = boolean(c.start, rounded_prisms, Op::difference);
   ASSERT_TRUE(rounded_at_once.ok()) << rounded_at_once.failure;
   EXPECT_NE(exact_volume(rounded), exact_volume(rounded_at_once.mesh));
+}
+
+// With exact operands the validation is the exact result's (under the
+// exact kernel: the next operand's certificate), not the rounded mesh's:
+// the torus-sphere union of the insertion order's triangulation, rounded to
+// nearest, crosses itself in doubles and not exactly.
+TEST(ExactChain, TheValidationIsTheExactResults) {
+  Boolean_options o = nearest();
+  o.delaunay_retriangulation = false;
+  const Exact_kernel k;
+  const auto r = boolean(exact_operand(torus(1, 0.3, 24, 12), k),
+                         exact_operand(rigidly_moved(icosphere(2), 0.3, 0.2, {0, 0, 0.05}), k), Op::union_of, k, o);
+  ASSERT_TRUE(r.ok()) << r.failure;
+  EXPECT_EQ(r.validation.kernel, Exact_kernel::name());
+  EXPECT_TRUE(r.validation.is_valid_solid()) << r.validation.summary();
+  EXPECT_GT(r.counts.unchanged_certified_faces, 0u);  // the operands' checks certify the faces kept whole
+  EXPECT_FALSE(validate_solid(r.mesh).self_intersection_free.passed());
 }
 
 TEST(ExactChain, TheExactMeshIsRefusedWhereItIsNotTheExactResult) {

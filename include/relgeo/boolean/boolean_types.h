@@ -42,10 +42,25 @@ constexpr std::string_view to_string(Boolean_operation op) {
 /// How a Boolean writes its new vertices in doubles (Boolean_options::rounding).
 enum class Output_rounding : std::uint8_t { nearest, repaired };
 
+/// \concept ExactChainingKernel
+/// A kernel whose Booleans can chain without rounding: exact constructions,
+/// implicit points that are exact points of K::Point_3 (`.point`), and
+/// points that are not doubles (Exact_kernel, Cgal_kernel<CGAL::Epeck>).
+/// relgeo::boolean takes meshes of K's points under such a kernel, and
+/// Boolean_result::exact_mesh() gives one.
+template <class K>
+concept ExactChainingKernel =
+    IntersectionKernel_3<K> && K::has_exact_constructions && !std::same_as<typename K::Point_3, Point_3<double>> &&
+    requires(const typename K::Implicit_point_3& p) {
+  { p.point } -> std::convertible_to<typename K::Point_3>;
+};
+
 class Valid_solid;
 namespace internal {
 template <IntersectionKernel_3 K>
 class Csg_evaluator;
+template <ExactChainingKernel K>
+class Exact_csg_evaluator;
 }
 
 /// That two meshes are valid solids certified by relgeo's exact checks
@@ -59,12 +74,14 @@ class Csg_evaluator;
 ///
 /// It may also carry each mesh's half-edge opposites (from the check or the
 /// validation that certified it): the Boolean then does not build that
-/// operand's topology again.
+/// operand's topology again. The meshes are of doubles, or of an exact
+/// kernel's points (an exact chain's, relgeo::csg's exact intermediates).
 class Operand_certificate {
  public:
   Operand_certificate() = default;
   /// The certificate holds for operands `a` and `b` (the same objects).
-  bool covers(const Triangle_mesh<Point_3<double>>& a, const Triangle_mesh<Point_3<double>>& b) const {
+  template <class P>
+  bool covers(const Triangle_mesh<P>& a, const Triangle_mesh<P>& b) const {
     return a_ == &a && b_ == &b;
   }
   /// The half-edge opposites of operand m (0: a, 1: b) when the certificate
@@ -76,11 +93,14 @@ class Operand_certificate {
   friend class Valid_solid;
   template <IntersectionKernel_3 K>
   friend class internal::Csg_evaluator;
-  Operand_certificate(const Triangle_mesh<Point_3<double>>* a, const Triangle_mesh<Point_3<double>>* b,
+  template <ExactChainingKernel K>
+  friend class internal::Exact_csg_evaluator;
+  template <class P>
+  Operand_certificate(const Triangle_mesh<P>* a, const Triangle_mesh<P>* b,
                       const std::vector<Index>* opposites_a = nullptr, const std::vector<Index>* opposites_b = nullptr)
       : a_(a), b_(b), opposites_{opposites_a, opposites_b} {}
-  const Triangle_mesh<Point_3<double>>* a_ = nullptr;
-  const Triangle_mesh<Point_3<double>>* b_ = nullptr;
+  const void* a_ = nullptr;  // (identity only: the mesh objects certified)
+  const void* b_ = nullptr;
   std::array<const std::vector<Index>*, 2> opposites_{};
 };
 
@@ -243,19 +263,6 @@ struct Boolean_output {
   std::vector<Index> halfedge_opposites;
 
   bool ok() const { return status == Status::ok; }
-};
-
-/// \concept ExactChainingKernel
-/// A kernel whose Booleans can chain without rounding: exact constructions,
-/// implicit points that are exact points of K::Point_3 (`.point`), and
-/// points that are not doubles (Exact_kernel, Cgal_kernel<CGAL::Epeck>).
-/// relgeo::boolean takes meshes of K's points under such a kernel, and
-/// Boolean_result::exact_mesh() gives one.
-template <class K>
-concept ExactChainingKernel =
-    IntersectionKernel_3<K> && K::has_exact_constructions && !std::same_as<typename K::Point_3, Point_3<double>> &&
-    requires(const typename K::Implicit_point_3& p) {
-  { p.point } -> std::convertible_to<typename K::Point_3>;
 };
 
 /// The result of relgeo::boolean under kernel K: the output, and its new

@@ -307,18 +307,27 @@ std::size_t coordinate_bits(const Triangle_mesh<P>& m) {
 // Exact intermediates (Csg_intermediates::exact): the leaves (checked in
 // doubles by Csg_evaluator::check) as K's points, each Boolean on exact
 // operands with the nearest rounding (which keeps the exact faces), its
-// exact_mesh() validated under K (the certificate of the next step, which
-// does not check it again), and the root rounded once.
+// exact result validated under K with the operands' certificates (the
+// certificate of the next step, which does not check it again), and the
+// root rounded once.
 template <ExactChainingKernel K>
 class Exact_csg_evaluator {
  public:
   using Exact_mesh = Triangle_mesh<typename K::Point_3>;
-  using Part = std::shared_ptr<const Exact_mesh>;
+  // A node's exact solid and, once validated, its half-edge opposites.
+  struct Part {
+    std::shared_ptr<const Exact_mesh> mesh;
+    std::shared_ptr<const std::vector<Index>> opposites;
+    explicit operator bool() const { return mesh != nullptr; }
+  };
 
   Exact_csg_evaluator(const K& k, const Csg_options& o) : k_(k), options_(o) {
+    // The leaves are certified when they were checked in full; every result
+    // is validated (exactly), so every later operand is certified too.
+    leaves_checked_ = o.boolean.check_operands && o.boolean.check_self_intersections;
     step_options_ = o.boolean;
     step_options_.check_operands = false;
-    step_options_.validate_output = false;
+    step_options_.validate_output = true;
     step_options_.rounding = Output_rounding::nearest;
   }
 
@@ -361,28 +370,32 @@ class Exact_csg_evaluator {
  private:
   Part exact_leaf(const Csg_node& n) {
     Part& p = leaves_[n.mesh.get()];
-    if (!p) p = std::make_shared<const Exact_mesh>(exact_operand(*n.mesh, k_));
+    if (!p) p.mesh = std::make_shared<const Exact_mesh>(exact_operand(*n.mesh, k_));
     return p;
   }
 
   Part step(const Part& a, const Part& b, Csg_node::Kind kind, const std::string& path) {
     internal::Stopwatch clock;
-    auto r = boolean(*a, *b, boolean_operation(kind), k_, step_options_);
+    Boolean_options options = step_options_;
+    if (leaves_checked_)
+      options.certified_operands =
+          Operand_certificate(a.mesh.get(), b.mesh.get(), a.opposites.get(), b.opposites.get());
+    auto r = boolean(*a.mesh, *b.mesh, boolean_operation(kind), k_, options);
     Csg_step s{.node = path,
                .operation = kind,
                .ok = r.ok(),
                .failure = r.failure,
                .faces = r.mesh.faces.size(),
+               .volume = r.validation.volume.value,
+               .validation = r.validation.summary(),
                .rounding = r.rounding};
     Part out;
     if (s.ok) {
       auto exact = std::make_shared<const Exact_mesh>(r.exact_mesh());
-      const Solid_report v = validate_solid(*exact, k_, options_.boolean.validation);
-      s.volume = v.volume.value;
-      s.validation = v.summary();
       s.coordinate_bits = coordinate_bits(*exact);
-      if (v.is_valid_solid()) {
-        out = std::move(exact);
+      if (r.validation.is_valid_solid()) {
+        out.mesh = std::move(exact);
+        out.opposites = std::make_shared<const std::vector<Index>>(std::move(r.halfedge_opposites));
       } else {
         s.ok = false;
         s.failure = "the exact result is not a valid solid: " + s.validation;
@@ -406,6 +419,7 @@ class Exact_csg_evaluator {
   const K& k_;
   Csg_options options_;
   Boolean_options step_options_;
+  bool leaves_checked_ = false;
   Csg_result result_;
   std::unordered_map<const Mesh_double*, Part> leaves_;  // a leaf used twice is converted once
 };
@@ -429,17 +443,18 @@ class Exact_csg_evaluator {
 template <IntersectionKernel_3 K = Filtered_exact_kernel>
 Csg_result csg(const Csg_node& tree, const K& k = K{}, const Csg_options& options = {}) {
   internal::Stopwatch clock;
+  const bool exact_intermediates = options.intermediates == Csg_intermediates::exact;
+  if (exact_intermediates && !ExactChainingKernel<K>)
+    throw Invalid_input("csg: exact intermediates need a kernel of exact constructions whose points are exact (" +
+                        K::name() + " is not one; Exact_kernel and Cgal_kernel<CGAL::Epeck> are)");
   internal::Csg_evaluator<K> e(k, options);
   e.check(tree, "root");
   Csg_result r;
-  if (options.intermediates == Csg_intermediates::exact) {
+  if (exact_intermediates) {
     if constexpr (ExactChainingKernel<K>) {
       internal::Exact_csg_evaluator<K> exact(k, options);
-      if (const auto root = exact.evaluate(tree)) exact.round_root(*root);
+      if (const auto root = exact.evaluate(tree)) exact.round_root(*root.mesh);
       r = std::move(exact.result());
-    } else {
-      throw Invalid_input("csg: exact intermediates need a kernel of exact constructions whose points are exact (" +
-                          K::name() + " is not one; Exact_kernel and Cgal_kernel<CGAL::Epeck> are)");
     }
   } else {
     const auto root = e.evaluate(tree, "root");

@@ -68,7 +68,7 @@
 namespace relgeo {
 namespace internal {
 
-// OP: the operands' point type, doubles or (an exact chain: Exact_operands)
+// OP: the operands' point type, doubles or (exact_operands: an exact chain)
 // K's own exact points.
 template <IntersectionKernel_3 K, class OP = Point_3<double>>
 class Boolean_engine {
@@ -121,11 +121,14 @@ class Boolean_engine {
     // anything (most outputs: no): only then does the repair look for it.
     if (options_.validate_output) validate(r);
     r.time.validation = clock.lap();
+    // (Exact operands: the validation is the exact result's, which says
+    // nothing of what rounding did; the repair looks for it itself.)
     const bool repair = K::is_certified && options_.rounding == Output_rounding::repaired;
-    if (repair && !(options_.validate_output && rounding_kept_validity(r.validation))) {
+    const bool kept = !exact_operands && options_.validate_output && rounding_kept_validity(r.validation);
+    if (repair && !kept) {
       repair_rounding_of(r);
       r.time.rounding = clock.lap();
-      if (options_.validate_output && r.rounding.rounds > 0) {
+      if (!exact_operands && options_.validate_output && r.rounding.rounds > 0) {
         validate(r);
         r.time.validation += clock.lap();
       }
@@ -407,10 +410,8 @@ class Boolean_engine {
       if (opposite_[m].size() == halfedges) continue;  // kept from this Boolean's check
       // Operands certified before (a chain's earlier result, a Valid_solid)
       // bring their opposites with the certificate; others are built here.
-      const std::vector<Index>* carried = nullptr;
-      if constexpr (!exact_operands)
-        if (options_.certified_operands.covers(*mesh_[0], *mesh_[1]))
-          carried = options_.certified_operands.opposites(m);
+      const std::vector<Index>* carried =
+          options_.certified_operands.covers(*mesh_[0], *mesh_[1]) ? options_.certified_operands.opposites(m) : nullptr;
       if (carried && carried->size() == halfedges) opposite_[m] = *carried;
       else opposite_[m] = Mesh_topology::build(*mesh_[m]).take_opposites();
     }
@@ -769,33 +770,43 @@ class Boolean_engine {
   // The operands are certified valid solids: checked here (the exact
   // self-intersection test included) or by relgeo before (Valid_solid, csg).
   bool operands_certified() const {
-    if constexpr (!exact_operands)
-      if (options_.certified_operands.covers(*mesh_[0], *mesh_[1])) return true;
-    return options_.check_operands && options_.check_self_intersections;
+    return options_.certified_operands.covers(*mesh_[0], *mesh_[1]) ||
+           (options_.check_operands && options_.check_self_intersections);
   }
 
   // validate_solid on the output's doubles, under the exact predicates
-  // whatever K. With certified operands, no pair of faces kept unchanged
-  // from one operand is tested again: that operand's certificate decided it.
-  // A valid output keeps the validation's half-edge opposites
+  // whatever K; with exact operands, on the exact result (exact_mesh())
+  // under K, the certificate of an exact chain's next operand. With
+  // certified operands, no pair of faces kept unchanged from one operand is
+  // tested again: that operand's certificate decided it. A valid output
+  // keeps the validation's half-edge opposites
   // (Boolean_output::halfedge_opposites): its next Boolean reuses them.
   void validate(Result& r) const {
     Mesh_topology topology;
-    const auto without_certificates = [&] {
-      r.validation = internal::validate_solid(r.mesh, Check_kernel{}, options_.validation, nullptr, &topology);
-    };
-    if constexpr (exact_operands) {
-      without_certificates();  // every face of exact operands is rounded: none is kept unchanged
-    } else if (!operands_certified()) {
-      without_certificates();
-    } else {
+    const auto validate_with = [&](const auto& mesh, const auto& kernel) {
+      if (!operands_certified()) {
+        r.validation = internal::validate_solid(mesh, kernel, options_.validation, nullptr, &topology);
+        return;
+      }
       const Certified_faces certified = unchanged_operand_faces(r);
       r.counts.unchanged_certified_faces = static_cast<std::size_t>(
           std::count_if(certified.group.begin(), certified.group.end(), [](std::uint8_t g) { return g != 0; }));
-      r.validation = internal::validate_solid(r.mesh, Check_kernel{}, options_.validation, &certified, &topology);
-    }
+      r.validation = internal::validate_solid(mesh, kernel, options_.validation, &certified, &topology);
+    };
+    if constexpr (exact_operands)
+      validate_with(r.exact_mesh(), k_);
+    else
+      validate_with(r.mesh, Check_kernel{});
     r.halfedge_opposites.clear();
     if (r.validation.is_valid_solid()) r.halfedge_opposites = std::move(topology).take_opposites();
+  }
+  // Output vertex v as the operands' points are: its double, or (exact
+  // operands: every output vertex is a new one) its exact point.
+  const OP& output_point(const Result& r, Index v) const {
+    if constexpr (exact_operands)
+      return r.new_vertex_points[v].point;
+    else
+      return r.mesh.vertices[v];
   }
 
   // Per output face: 1 + its operand when it is, unchanged, a face of that
@@ -808,7 +819,7 @@ class Boolean_engine {
   // phase's pairs (the same boxes): the validation tests them, and every
   // pair with a new or moved face.
   Certified_faces unchanged_operand_faces(const Result& r) const {
-    const Mesh& out = r.mesh;
+    const Triangle_mesh<Point_3<double>>& out = r.mesh;  // (its faces; the points: output_point)
     constexpr Index none = invalid_index, conflict = invalid_index - 1;
     const auto claim = [](Index& slot, Index value) { slot = slot == none || slot == value ? value : conflict; };
     std::array<std::vector<Index>, 2> face_of, vertex_of;  // input face -> output face, input vertex -> output vertex
@@ -824,7 +835,7 @@ class Boolean_engine {
       std::array<Index, 3> corner{};  // the input vertex at each output corner
       bool same = true;
       for (int i = 0; i < 3 && same; ++i) {
-        const Point_3<double>& p = out.vertices[out.faces[f][i]];
+        const OP& p = output_point(r, out.faces[f][i]);
         int j = 0;
         while (j < 3 && !(in.vertices[t[j]] == p)) ++j;
         same = j < 3;
@@ -987,6 +998,10 @@ Boolean_result<K> boolean(const Triangle_mesh<Point_3<double>>& a, const Triangl
 /// - the operand checks decide under K (exactly, on K's points);
 /// - every output vertex is rounded (first_new_vertex is 0, and
 ///   new_vertex_points holds every vertex's exact point);
+/// - `validation` (validate_output) is the exact result's, under K, with
+///   the operands' certificates (an Operand_certificate for these two
+///   meshes, or the operand checks): what certifies exact_mesh() as the next
+///   operand. The rounded `mesh` is not validated (validate_solid does it);
 /// - use_double_point_kernel does not apply.
 /// exact_operand() makes a mesh of doubles one. The result's exact_mesh() is
 /// the next step's operand (run the steps with

@@ -185,6 +185,19 @@ Part reduce_tree(const Csg_node& n, const std::string& path, const Leaf& leaf, c
   return parts[0];
 }
 
+// The record of one Boolean of the tree (its coordinate bits and time are
+// the caller's).
+inline Csg_step step_record(const std::string& path, Csg_node::Kind kind, const Boolean_output& r) {
+  return {.node = path,
+          .operation = kind,
+          .ok = r.ok(),
+          .failure = r.failure,
+          .faces = r.mesh.faces.size(),
+          .volume = r.validation.volume.value,
+          .validation = r.validation.summary(),
+          .rounding = r.rounding};
+}
+
 constexpr Boolean_operation boolean_operation(Csg_node::Kind kind) {
   return kind == Csg_node::Kind::union_of       ? Boolean_operation::union_of
          : kind == Csg_node::Kind::intersection ? Boolean_operation::intersection
@@ -257,14 +270,7 @@ class Csg_evaluator {
     if (options_.boolean.check_operands && options_.boolean.check_self_intersections && inner_.validate_output)
       options.certified_operands = Operand_certificate(&a, &b, pa.opposites.get(), pb.opposites.get());
     auto r = boolean(a, b, op, k_, options);
-    Csg_step s{.node = path,
-               .operation = kind,
-               .ok = r.ok(),
-               .failure = r.failure,
-               .faces = r.mesh.faces.size(),
-               .volume = r.validation.volume.value,
-               .validation = r.validation.summary(),
-               .rounding = r.rounding};
+    Csg_step s = step_record(path, kind, r);
     if (s.ok && inner_.validate_output && !r.validation.is_valid_solid()) {
       s.ok = false;
       s.failure = "the result is not a valid solid: " + s.validation;
@@ -381,14 +387,7 @@ class Exact_csg_evaluator {
       options.certified_operands =
           Operand_certificate(a.mesh.get(), b.mesh.get(), a.opposites.get(), b.opposites.get());
     auto r = boolean(*a.mesh, *b.mesh, boolean_operation(kind), k_, options);
-    Csg_step s{.node = path,
-               .operation = kind,
-               .ok = r.ok(),
-               .failure = r.failure,
-               .faces = r.mesh.faces.size(),
-               .volume = r.validation.volume.value,
-               .validation = r.validation.summary(),
-               .rounding = r.rounding};
+    Csg_step s = step_record(path, kind, r);
     Part out;
     if (s.ok) {
       auto exact = std::make_shared<const Exact_mesh>(r.exact_mesh());

@@ -116,6 +116,7 @@ class Boolean_engine {
     for (auto& o : opposite_) std::vector<Index>().swap(o);
     r.time.labelling = clock.lap();
     assemble(r);
+    release_arrangement();  // the output holds what the later phases need (peak memory)
     r.time.assembly = clock.lap();
     // The validation, when asked for, tells whether the rounding broke
     // anything (most outputs: no): only then does the repair look for it.
@@ -763,6 +764,21 @@ class Boolean_engine {
       }
     locate_output_vertices(new_index, r);
     r.mesh.tags.set_creases(std::move(creases));  // sorted, each once
+  }
+
+  // Everything between the operands and the output: the points, their
+  // locations, the curves and the pieces. The validation and the repair read
+  // the output (and the broad phase's pairs), not these.
+  void release_arrangement() {
+    points_.clear();
+    equal_points_ = Union_find<Index>();
+    std::vector<Located_point>().swap(located_);
+    std::unordered_map<Cell_pair, Index, Cell_pair_hash>().swap(point_of_cells_);
+    std::vector<Segment>().swap(segments_);
+    for (auto& c : coplanar_) std::unordered_map<Index, std::vector<Index>>().swap(c);
+    curves_ = Edge_set();
+    for (auto& p : pieces_) p = Pieces();
+    for (auto& l : labels_) std::vector<Piece_label>().swap(l);
   }
 
   // ---- 7. validation -------------------------------------------------------------------

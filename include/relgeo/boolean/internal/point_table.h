@@ -62,6 +62,14 @@ class Point_table {
     if (a.error < 0) a = approximate_(p);
     return a;
   }
+  /// Frees every point (the table is empty after: size() 0).
+  void clear() {
+    std::vector<Index>().swap(slot_);
+    std::vector<std::vector<IP>>().swap(chunks_);
+    std::vector<Approximate_point_3>().swap(approximation_);
+    held_ = 0;
+    inputs_ = 0;
+  }
   /// Adds a point; its global index.
   Index add(IP p) {
     slot_.push_back(hold(std::move(p)));

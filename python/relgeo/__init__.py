@@ -261,8 +261,9 @@ def csg(tree, kernel=DEFAULT_KERNEL, rounding="repaired", retriangulation="delau
     file; absent for a dict), kernel, intermediates, status ("ok" or
     "failed"), failure, steps [{node, operation, ok, failure, faces, volume,
     validation, rounding, coordinate_bits, seconds}], output {vertices,
-    faces, volume, rounding, validation}, seconds, total_seconds. Raises ``InvalidCsgNode`` (an ``InvalidInput``, a
-    ``ValueError``) naming the node (``e.node``: "root.1") for an unknown
+    faces, volume, rounding, validation}, seconds, total_seconds. Raises
+    ``InvalidCsgNode`` (an ``InvalidInput``, a ``ValueError``) naming the
+    node (``e.node``: "root.1") for an unknown
     op, fewer than two arguments, a leaf that cannot be read or is not a
     valid solid; ``UnreadableFile`` for a tree file that cannot be read or
     is not JSON; ``ValueError`` for a bad kernel or option name. The GIL is

@@ -161,6 +161,24 @@ TEST(Csg, ExactIntermediatesRoundOnlyTheRoot) {
   EXPECT_EQ(r.steps.back().volume, validate_solid(exact, Exact_kernel{}).volume.value);
 }
 
+// An empty intermediate (cubes apart, intersected) is the empty solid, and
+// the tree goes on, with rounded and with exact intermediates.
+TEST(Csg, AnEmptyIntermediateIsTheEmptySolid) {
+  const Csg_node tree = Csg_node::operation(
+      Kind::union_of, {Csg_node::operation(Kind::intersection, {Csg_node::solid(cube(0, 0, 0, 1), "cube"),
+                                                                Csg_node::solid(cube(3, 0, 0, 1), "apart")}),
+                       Csg_node::solid(cube(0, 0, 0, 1), "again")});
+  Csg_options exact;
+  exact.intermediates = Csg_intermediates::exact;
+  for (const Csg_result& r : {csg(tree), csg(tree, Exact_kernel{}, exact)}) {
+    ASSERT_TRUE(r.ok()) << r.failure;
+    ASSERT_EQ(r.steps.size(), 2u);
+    EXPECT_EQ(r.steps[0].faces, 0u);
+    EXPECT_EQ(r.mesh.faces.size(), 12u);
+    EXPECT_EQ(r.steps[1].volume, 1);
+  }
+}
+
 TEST(Csg, ExactIntermediatesNeedAnExactKernel) {
   Csg_options o;
   o.intermediates = Csg_intermediates::exact;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,53 @@ TEST(ExactChain, TheValidationIsTheExactResults) {
   EXPECT_TRUE(r.validation.is_valid_solid()) << r.validation.summary();
   EXPECT_GT(r.counts.unchanged_certified_faces, 0u);  // the operands' checks certify the faces kept whole
   EXPECT_FALSE(validate_solid(r.mesh).self_intersection_free.passed());
+}
+
+// Bad exact operands get the typed errors doubles get: the checks decide
+// under the exact kernel; a NaN cannot become a rational.
+TEST(ExactChain, BadExactOperandsAreRefusedWithTheDefect) {
+  const Exact_kernel k;
+  const Exact_mesh good = exact_operand(cube(0, 0, 0, 1), k);
+  const auto defect_of = [&](const Mesh_double& bad) -> Mesh_defect {
+    try {
+      (void)boolean(good, exact_operand(bad, k), Op::union_of, k);
+    } catch (const Invalid_operand& e) {
+      EXPECT_EQ(e.operand(), "B");
+      return e.defect();
+    }
+    ADD_FAILURE() << "not refused";
+    return Mesh_defect::undecided;
+  };
+  Mesh_double open = cube(2, 0, 0, 1);
+  open.faces.pop_back();
+  EXPECT_EQ(defect_of(open), Mesh_defect::boundary_edge);
+  Mesh_double flipped = cube(2, 0, 0, 1);
+  std::swap(flipped.faces[0][1], flipped.faces[0][2]);
+  EXPECT_EQ(defect_of(flipped), Mesh_defect::inconsistent_orientation);
+  Mesh_double crossing = cube(2, 0, 0, 1);
+  const Mesh_double other = cube(2.5, 0.5, 0.5, 1);
+  for (const auto& p : other.vertices) crossing.vertices.push_back(p);
+  for (const auto& f : other.faces) crossing.faces.push_back({f[0] + 8, f[1] + 8, f[2] + 8});
+  EXPECT_EQ(defect_of(crossing), Mesh_defect::self_intersection);
+  Mesh_double nan = cube(2, 0, 0, 1);
+  nan.vertices[3].y = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW((void)exact_operand(nan, k), Non_finite_input);
+}
+
+// The empty solid is an operand of exact chains as of rounded ones: cubes
+// apart, intersected, give the empty exact solid, and the chain goes on
+// (the other operand's pieces are outside it: no ray to cast).
+TEST(ExactChain, TheEmptySolidGoesOn) {
+  const Exact_kernel k;
+  const auto apart =
+      boolean(exact_operand(cube(0, 0, 0, 1), k), exact_operand(cube(3, 0, 0, 1), k), Op::intersection, k, nearest());
+  ASSERT_TRUE(apart.ok()) << apart.failure;
+  const Exact_mesh empty = apart.exact_mesh();
+  ASSERT_TRUE(empty.faces.empty());
+  const auto again = boolean(empty, exact_operand(cube(0, 0, 0, 1), k), Op::union_of, k, nearest());
+  ASSERT_TRUE(again.ok()) << again.failure;
+  EXPECT_EQ(again.mesh.faces.size(), 12u);
+  EXPECT_EQ(exact_volume(again.exact_mesh()), 1);
 }
 
 TEST(ExactChain, TheExactMeshIsRefusedWhereItIsNotTheExactResult) {

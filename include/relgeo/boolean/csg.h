@@ -198,6 +198,11 @@ inline Csg_step step_record(const std::string& path, Csg_node::Kind kind, const 
           .rounding = r.rounding};
 }
 
+// Whether a validated result certifies the solid its mesh bounds: a valid
+// solid, or no face at all (the empty solid, as Valid_solid takes it: the
+// validation does not call a mesh without faces a solid).
+inline bool certified_solid(const Boolean_output& r) { return r.mesh.faces.empty() || r.validation.is_valid_solid(); }
+
 constexpr Boolean_operation boolean_operation(Csg_node::Kind kind) {
   return kind == Csg_node::Kind::union_of       ? Boolean_operation::union_of
          : kind == Csg_node::Kind::intersection ? Boolean_operation::intersection
@@ -271,7 +276,7 @@ class Csg_evaluator {
       options.certified_operands = Operand_certificate(&a, &b, pa.opposites.get(), pb.opposites.get());
     auto r = boolean(a, b, op, k_, options);
     Csg_step s = step_record(path, kind, r);
-    if (s.ok && inner_.validate_output && !r.validation.is_valid_solid()) {
+    if (s.ok && inner_.validate_output && !certified_solid(r)) {
       s.ok = false;
       s.failure = "the result is not a valid solid: " + s.validation;
     }
@@ -367,7 +372,8 @@ class Exact_csg_evaluator {
     if (options_.boolean.validate_output) {
       const Solid_report v = validate_solid(m, Filtered_exact_kernel{}, options_.boolean.validation);
       result_.validation = v.summary();
-      if (!v.is_valid_solid()) fail("root (rounding): the rounded solid is not a valid solid: " + result_.validation);
+      if (!m.faces.empty() && !v.is_valid_solid())
+        fail("root (rounding): the rounded solid is not a valid solid: " + result_.validation);
     }
   }
 
@@ -392,7 +398,7 @@ class Exact_csg_evaluator {
     if (s.ok) {
       auto exact = std::make_shared<const Exact_mesh>(r.exact_mesh());
       s.coordinate_bits = coordinate_bits(*exact);
-      if (r.validation.is_valid_solid()) {
+      if (certified_solid(r)) {
         out.mesh = std::move(exact);
         out.opposites = std::make_shared<const std::vector<Index>>(std::move(r.halfedge_opposites));
       } else {

@@ -631,6 +631,7 @@ class Boolean_engine {
 
   std::optional<Piece_label> ray_label(int m, Index t) {
     const Mesh& other = *mesh_[1 - m];
+    if (other.faces.empty()) return Piece_label::outside;  // the empty solid (no point above it to cast to)
     // q lies above the other operand: an exact point's approximation is
     // within a relative 2^-52 of it, far below the lift.
     double zmax = -std::numeric_limits<double>::infinity();

@@ -799,23 +799,23 @@ class Boolean_engine {
   // keeps the validation's half-edge opposites
   // (Boolean_output::halfedge_opposites): its next Boolean reuses them.
   void validate(Result& r) const {
-    Mesh_topology topology;
+    std::vector<Index> opposites;
     const auto validate_with = [&](const auto& mesh, const auto& kernel) {
       if (!operands_certified()) {
-        r.validation = internal::validate_solid(mesh, kernel, options_.validation, nullptr, &topology);
+        r.validation = internal::validate_solid(mesh, kernel, options_.validation, nullptr, &opposites);
         return;
       }
       const Certified_faces certified = unchanged_operand_faces(r);
       r.counts.unchanged_certified_faces = static_cast<std::size_t>(
           std::count_if(certified.group.begin(), certified.group.end(), [](std::uint8_t g) { return g != 0; }));
-      r.validation = internal::validate_solid(mesh, kernel, options_.validation, &certified, &topology);
+      r.validation = internal::validate_solid(mesh, kernel, options_.validation, &certified, &opposites);
     };
     if constexpr (exact_operands)
       validate_with(r.exact_mesh(), k_);
     else
       validate_with(r.mesh, Check_kernel{});
     r.halfedge_opposites.clear();
-    if (r.validation.is_valid_solid()) r.halfedge_opposites = std::move(topology).take_opposites();
+    if (r.validation.is_valid_solid()) r.halfedge_opposites = std::move(opposites);
   }
   // Output vertex v as the operands' points are: its double, or (exact
   // operands: every output vertex is a new one) its exact point.

@@ -49,7 +49,6 @@ Csg_node parse_csg_tree(const std::string& json_file);
 /// `rounding` as asked (the double kernel's Booleans round to nearest
 /// whatever it is).                                               [report.cpp]
 io::Json csg_report_json(const std::string& tree, const std::string& kernel, const std::string& rounding,
-                         const Csg_result& result, double total_seconds,
-                         Csg_intermediates intermediates = Csg_intermediates::rounded);
+                         const Csg_result& result, double total_seconds, Csg_intermediates intermediates);
 
 }  // namespace relgeo::tool

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "boolean_chains.h"
@@ -211,6 +212,64 @@ TEST(RoundingRepair, RepairsTheNearestRoundingOfABoolean) {
   ASSERT_EQ(maps.face_origin.size(), r.mesh.faces.size());
   ASSERT_EQ(maps.vertex_map.size(), movable.size());
   for (Index f : maps.face_origin) EXPECT_LT(f, faces);
+}
+
+// Each round searches a hierarchy of the faces near its defects only, and
+// that of every face once a test leaves them. The repair must be the one
+// that searches every face (the code before 2026-11-30) when the hierarchy
+// holds every defect's neighbourhood, and when it holds one only: then the
+// search of every face finds the rest (without it, the second repair
+// differs: the faces a test misses change which position, flip or collapse
+// is kept). The case: step 6 of the slab's chain (insertion-order
+// triangulation), whose nearest rounding is repaired by moves, flips and
+// collapses.
+TEST(RoundingRepair, TheSearchNearTheDefectsRepairsAsTheSearchOfEveryFace) {
+  const Boolean_chain chain = make_chain(Chain_family::slab_and_boxes, 6, /*seed=*/1);
+  Mesh_double current = chain.start;
+  for (std::size_t i = 0; i + 1 < chain.steps.size(); ++i) {
+    const auto step = boolean(current, chain.steps[i].second, chain.steps[i].first, Filtered_exact_kernel{},
+                              repair_without_delaunay());
+    ASSERT_TRUE(step.ok() && step.validation.is_valid_solid()) << "step " << i + 1;
+    current = operand_of(step.mesh);
+  }
+  const auto r = boolean(current, chain.steps.back().second, chain.steps.back().first, Filtered_exact_kernel{},
+                         nearest_rounding());
+  ASSERT_TRUE(r.ok());
+  std::vector<char> movable(r.mesh.vertices.size(), 0);
+  for (Index v = r.first_new_vertex; v < movable.size(); ++v) movable[v] = 1;
+  struct Repaired {
+    Mesh_double mesh;
+    Rounding_repair_maps maps;
+    Rounding_repair_report report;
+  };
+  const auto repaired = [&](std::size_t regions) {
+    Repaired x{r.mesh, {}, {}};
+    x.report = internal::Rounding_repair(x.mesh, movable, {}, regions).run(x.maps);
+    return x;
+  };
+  const Repaired every_face = repaired(0);  // no region: every test searches every face
+  // The case exercises more than moves.
+  ASSERT_GT(every_face.report.defects_before, 1u);
+  ASSERT_GT(every_face.report.flips, 0u);
+  ASSERT_GT(every_face.report.collapses, 0u);
+  ASSERT_TRUE(every_face.report.converged());
+  const auto creases = [](const Mesh_double& m) {
+    return std::vector<Edge>(m.tags.creases().begin(), m.tags.creases().end());
+  };
+  for (const std::size_t regions : {std::numeric_limits<std::size_t>::max(), std::size_t{1}}) {
+    const Repaired near = repaired(regions);
+    SCOPED_TRACE("regions " + std::to_string(regions));
+    EXPECT_EQ(near.mesh.vertices, every_face.mesh.vertices);
+    EXPECT_EQ(near.mesh.faces, every_face.mesh.faces);
+    EXPECT_EQ(creases(near.mesh), creases(every_face.mesh));
+    EXPECT_EQ(near.maps.vertex_map, every_face.maps.vertex_map);
+    EXPECT_EQ(near.maps.face_origin, every_face.maps.face_origin);
+    EXPECT_EQ(near.report.rounds, every_face.report.rounds);
+    EXPECT_EQ(near.report.moved_vertices, every_face.report.moved_vertices);
+    EXPECT_EQ(near.report.flips, every_face.report.flips);
+    EXPECT_EQ(near.report.collapses, every_face.report.collapses);
+    EXPECT_EQ(near.report.largest_change, every_face.report.largest_change);
+  }
 }
 
 TEST(RoundingRepair, GivesUpAfterItsRoundsAndSaysWhatIsLeft) {

@@ -22,6 +22,10 @@
 // max_rounds; the report says which defects remain (never a silent invalid
 // mesh) and the largest change made. Only faces with a rounded vertex or a
 // changed face can cross: the rest is the exact result, which is valid.
+// What the repair keeps per face or vertex of the whole mesh is a few bytes
+// (flags, the vertices' stars in one table); its hierarchy for the local
+// tests holds the faces near the round's defects, so that a repair of a few
+// faces of a large mesh costs little memory.
 #pragma once
 
 #include <algorithm>
@@ -30,6 +34,9 @@
 #include <cstddef>
 #include <limits>
 #include <numeric>
+#include <span>
+#include <type_traits>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -46,16 +53,58 @@ namespace relgeo {
 
 namespace internal {
 
+// The faces around each vertex: one table for the whole mesh, built once,
+// and a copy of each star the repair reads or changes (few: the repair is
+// local), kept in the faces' order of the table.
+class Vertex_stars {
+ public:
+  Vertex_stars() = default;
+  Vertex_stars(const std::vector<Triangle>& faces, std::size_t vertex_count) : first_(vertex_count + 1, 0) {
+    for (const Triangle& t : faces)
+      for (Index v : t) ++first_[v + 1];
+    std::partial_sum(first_.begin(), first_.end(), first_.begin());
+    face_.resize(first_.back());
+    std::vector<Index> next(first_.begin(), first_.end() - 1);
+    for (Index f = 0; f < faces.size(); ++f)
+      for (Index v : faces[f]) face_[next[v]++] = f;
+  }
+  // The star of v to read and change (its references stay valid).
+  std::vector<Index>& operator[](Index v) {
+    auto it = copied_.find(v);
+    if (it == copied_.end()) it = copied_.emplace(v, std::vector<Index>(table(v).begin(), table(v).end())).first;
+    return it->second;
+  }
+  // The star of v to read only, without copying it.
+  std::span<const Index> view(Index v) const {
+    const auto it = copied_.find(v);
+    return it == copied_.end() ? table(v) : std::span<const Index>(it->second);
+  }
+
+ private:
+  std::span<const Index> table(Index v) const { return {face_.data() + first_[v], face_.data() + first_[v + 1]}; }
+  std::vector<std::size_t> first_;
+  std::vector<Index> face_;
+  std::unordered_map<Index, std::vector<Index>> copied_;
+};
+
 class Rounding_repair {
  public:
   using K = Filtered_exact_kernel;
   using Mesh = Triangle_mesh<Point_3<double>>;
+  // The kernel's points are the mesh's vertices themselves.
+  static_assert(std::is_same_v<K::Point_3, Point_3<double>>);
 
-  Rounding_repair(Mesh& m, const std::vector<char>& movable, const Rounding_repair_options& o)
-      : m_(m), movable_(movable), options_(o), removed_(m.faces.size(), 0), active_(m.faces.size(), 0) {
-    const auto make = k_.construct_point_3_object();
-    point_.reserve(m.vertices.size());
-    for (const auto& p : m.vertices) point_.push_back(make(p.x, p.y, p.z));
+  // `regions`: of how many of a round's defect faces the neighbourhood is
+  // in its hierarchy (all by default; fewer only for tests: the faces of
+  // the others are found by the search of every face).
+  Rounding_repair(Mesh& m, const std::vector<char>& movable, const Rounding_repair_options& o,
+                  std::size_t regions = std::numeric_limits<std::size_t>::max())
+      : m_(m),
+        movable_(movable),
+        options_(o),
+        region_limit_(regions),
+        removed_(m.faces.size(), 0),
+        active_(m.faces.size(), 0) {
     for (Index f = 0; f < m.faces.size(); ++f)
       for (Index v : m.faces[f]) active_[f] = active_[f] || movable_[v];
   }
@@ -79,7 +128,7 @@ class Rounding_repair {
     while ((!pairs.empty() || !degenerate.empty()) && r.rounds < options_.max_rounds) {
       ++r.rounds;
       repair_round(pairs, degenerate, r);
-      detect(pairs, degenerate);
+      detect_after_round(pairs, degenerate);
     }
     compact(maps);
     for (auto& [f, g] : pairs) {
@@ -94,13 +143,10 @@ class Rounding_repair {
   }
 
  private:
-  // What only a repair needs: the vertices' first positions and stars, the
-  // creases, the tolerance in the mesh's units.
+  // What only a repair needs: the vertices' stars, the creases, the
+  // tolerance in the mesh's units.
   void prepare_repair() {
-    home_ = m_.vertices;
-    star_.assign(m_.vertices.size(), {});
-    for (Index f = 0; f < m_.faces.size(); ++f)
-      for (Index v : m_.faces[f]) star_[v].push_back(f);
+    star_ = Vertex_stars(m_.faces, m_.vertices.size());
     stamp_.assign(m_.faces.size(), 0);
     for (const Edge& e : m_.tags.creases()) creases_.push_back(edge_key(e.a, e.b));
     std::sort(creases_.begin(), creases_.end());
@@ -116,9 +162,10 @@ class Rounding_repair {
     const Triangle& t = m_.faces[f];
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
     const auto orient = k_.orientation_2_object();
+    const auto& p = m_.vertices;
     for (int plane = 0; plane < 3; ++plane)
-      if (!certainly(orient(project_to_plane<K>(point_[t[0]], plane), project_to_plane<K>(point_[t[1]], plane),
-                            project_to_plane<K>(point_[t[2]], plane)),
+      if (!certainly(orient(project_to_plane<K>(p[t[0]], plane), project_to_plane<K>(p[t[1]], plane),
+                            project_to_plane<K>(p[t[2]], plane)),
                      Certified_sign::zero))
         return false;  // the filtered exact kernel decides every sign
     return true;
@@ -126,7 +173,7 @@ class Rounding_repair {
   // Two live, non-degenerate faces meet beyond what they share (undecided
   // cannot happen under the exact kernel; it counts as meeting).
   bool meet(Index f, Index g) const {
-    const Maybe x = faces_meet_beyond_shared(k_, point_, m_.faces[f], m_.faces[g]);
+    const Maybe x = faces_meet_beyond_shared(k_, m_.vertices, m_.faces[f], m_.faces[g]);
     return !x || *x;
   }
   Box_3 box(Index f) const {
@@ -141,21 +188,54 @@ class Rounding_repair {
   void detect(std::vector<Face_pair>& pairs, std::vector<Index>& degenerate_faces) {
     pairs.clear(), degenerate_faces.clear();
     const Index n = static_cast<Index>(m_.faces.size());
-    std::vector<Box_3> boxes(n), active_boxes;
     std::vector<Index> active_faces;
     is_degenerate_.assign(n, -1);
-    for (Index f = 0; f < n; ++f) {
-      if (removed_[f]) continue;  // an empty box: meets nothing
-      boxes[f] = box(f);
-      if (!active_[f]) continue;
-      active_faces.push_back(f), active_boxes.push_back(boxes[f]);
+    for (Index f = 0; f < n; ++f)
+      if (!removed_[f] && active_[f]) active_faces.push_back(f);
+    find_defects_of(
+        active_faces, [&](Index f) { return active_[f] != 0; }, pairs, degenerate_faces);
+  }
+  // After a round: the defects of the faces it changed, and those found
+  // before among the faces it left as they were (which still are).
+  void detect_after_round(std::vector<Face_pair>& pairs, std::vector<Index>& degenerate_faces) {
+    const auto gone = [&](Index f) { return removed_[f] || dirty_mark(f); };
+    std::erase_if(pairs, [&](const Face_pair& p) { return gone(p.first) || gone(p.second); });
+    std::erase_if(degenerate_faces, gone);
+    std::vector<Index> changed;
+    for (Index f : dirty_)
+      if (!removed_[f]) changed.push_back(f), is_degenerate_[f] = -1;
+    std::sort(changed.begin(), changed.end());
+    find_defects_of(
+        changed, [&](Index f) { return dirty_mark(f); }, pairs, degenerate_faces);
+    std::sort(degenerate_faces.begin(), degenerate_faces.end());
+  }
+  // Adds the defects of the faces `of` (sorted; in(f): f is one of them):
+  // each degenerate one, and each pair of one of them and a live face that
+  // meet. Every live face's box is searched in a hierarchy of theirs, a
+  // block at a time (no box per face of the whole mesh at once).
+  template <class In>
+  void find_defects_of(const std::vector<Index>& of, In&& in, std::vector<Face_pair>& pairs,
+                       std::vector<Index>& degenerate_faces) {
+    std::vector<Box_3> of_boxes;
+    for (Index f : of) {
+      of_boxes.push_back(box(f));
       if (known_degenerate(f)) degenerate_faces.push_back(f);
     }
-    const Face_bvh active(active_boxes);
-    for (const auto& [f, i] : active.overlapping_pairs_with_boxes(boxes)) {
-      const Index g = active_faces[i];
-      if (f == g || (active_[f] && f > g) || known_degenerate(f) || known_degenerate(g)) continue;
-      if (meet(f, g)) pairs.push_back({std::min(f, g), std::max(f, g)});
+    const Face_bvh hierarchy(of_boxes);
+    const Index n = static_cast<Index>(m_.faces.size());
+    constexpr Index block = 4096;
+    std::vector<Index> faces;
+    std::vector<Box_3> boxes;
+    for (Index begin = 0; begin < n; begin += block) {
+      faces.clear(), boxes.clear();
+      for (Index f = begin; f < std::min(n, begin + block); ++f)
+        if (!removed_[f]) faces.push_back(f), boxes.push_back(box(f));
+      for (const auto& [j, i] : hierarchy.overlapping_pairs_with_boxes(boxes)) {
+        const Index f = faces[j], g = of[i];
+        // A pair of two of them is met twice: kept once.
+        if (f == g || (in(f) && f > g) || known_degenerate(f) || known_degenerate(g)) continue;
+        if (meet(f, g)) pairs.push_back({std::min(f, g), std::max(f, g)});
+      }
     }
     std::sort(pairs.begin(), pairs.end());
   }
@@ -164,14 +244,65 @@ class Rounding_repair {
     if (is_degenerate_[f] < 0) is_degenerate_[f] = degenerate(f);
     return is_degenerate_[f] != 0;
   }
-  // The hierarchy of the live faces, for the local tests of one round.
-  void build_hierarchy() {
+  // The hierarchy for the local tests of one round: of the live faces near
+  // the round's defect faces. Near: a box around each defect face's two
+  // rings of faces (those the round's moves, flips and collapses change or
+  // test), widened by what they may move. A test of a face whose box leaves
+  // every region (rare: a chain of collapses) builds it over every live face.
+  void build_hierarchy(const std::vector<Index>& defect_faces) {
+    regions_.clear();
+    for (std::size_t i = 0; i < std::min(defect_faces.size(), region_limit_); ++i)
+      regions_.push_back(widened(two_rings_box(defect_faces[i])));
+    regions_bvh_ = Face_bvh(regions_);
+    std::vector<Box_3> boxes;
+    live_faces_.clear();
+    for (Index f = 0; f < m_.faces.size(); ++f) {
+      if (removed_[f]) continue;
+      const Box_3 b = box(f);
+      bool near = false;
+      regions_bvh_.for_each_face_in_box(b, [&](Index) { near = true; });
+      if (near) live_faces_.push_back(f), boxes.push_back(b);
+    }
+    bvh_ = Face_bvh(boxes);
+    whole_ = false;
+    dirty_.clear();
+  }
+  void build_whole_hierarchy() {
     std::vector<Box_3> boxes;
     live_faces_.clear();
     for (Index f = 0; f < m_.faces.size(); ++f)
       if (!removed_[f]) live_faces_.push_back(f), boxes.push_back(box(f));
     bvh_ = Face_bvh(boxes);
-    dirty_.clear();
+    whole_ = true;
+  }
+  // Every face whose box meets b is in the hierarchy (or dirty).
+  bool hierarchy_covers(const Box_3& b) const {
+    if (whole_) return true;
+    bool inside = false;
+    regions_bvh_.for_each_face_in_box(b, [&](Index i) {
+      const Box_3& r = regions_[i];
+      inside = inside || (r.lo[0] <= b.lo[0] && r.lo[1] <= b.lo[1] && r.lo[2] <= b.lo[2] && b.hi[0] <= r.hi[0] &&
+                          b.hi[1] <= r.hi[1] && b.hi[2] <= r.hi[2]);
+    });
+    return inside;
+  }
+  Box_3 two_rings_box(Index f) const {
+    Box_3 b;
+    for (Index v : m_.faces[f])
+      for (Index g : star_.view(v))
+        if (!removed_[g])
+          for (Index u : m_.faces[g])
+            for (Index h : star_.view(u))
+              if (!removed_[h]) b.extend(box(h));
+    return b;
+  }
+  // b grown by twice the tolerance and a few units in the last place.
+  Box_3 widened(Box_3 b) const {
+    double largest = 0;
+    for (int k = 0; k < 3; ++k) largest = std::max({largest, std::abs(b.lo[k]), std::abs(b.hi[k])});
+    const double margin = 2 * tolerance_ + 16 * std::numeric_limits<double>::epsilon() * largest;
+    for (int k = 0; k < 3; ++k) b.lo[k] -= margin, b.hi[k] += margin;
+    return b;
   }
 
   // Defects of the faces in `s`: each degenerate face, and each pair of a
@@ -194,13 +325,14 @@ class Rounding_repair {
       for (std::size_t j = i + 1; j < live.size(); ++j) count += meet(live[i], live[j]);
     for (Index f : live) {
       if (count >= enough) break;  // the caller only needs to know it is not fewer
+      const Box_3 b = box(f);
+      if (!hierarchy_covers(b)) build_whole_hierarchy();
       const auto test = [&](Index g) {
         if (removed_[g] || stamp_[g] == current_stamp_) return;
         // Faces untouched since the detection keep their degeneracy flag.
         if (dirty_mark(g) ? degenerate(g) : known_degenerate(g)) return;
         count += meet(f, g);
       };
-      const Box_3 b = box(f);
       bvh_.for_each_face_in_box(b, [&](Index i) {
         if (!dirty_mark(live_faces_[i])) test(live_faces_[i]);  // a dirty face's box in the hierarchy is stale
       });
@@ -220,12 +352,12 @@ class Rounding_repair {
 
   void repair_round(const std::vector<Face_pair>& pairs, const std::vector<Index>& degenerate_faces,
                     Rounding_repair_report& r) {
-    build_hierarchy();
     std::fill(is_dirty_.begin(), is_dirty_.end(), 0);
     std::vector<Index> faces = degenerate_faces;
     for (const auto& [f, g] : pairs) faces.push_back(f), faces.push_back(g);
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    build_hierarchy(faces);
     std::vector<Index> vertices;
     for (Index f : faces)
       for (Index v : m_.faces[f])
@@ -242,8 +374,13 @@ class Rounding_repair {
   }
 
   void set_position(Index v, const Point_3<double>& p) {
+    home_.try_emplace(v, m_.vertices[v]);
     m_.vertices[v] = p;
-    point_[v] = k_.construct_point_3_object()(p.x, p.y, p.z);
+  }
+  // Where v was before the repair (only set_position moves a vertex).
+  Point_3<double> home(Index v) const {
+    const auto it = home_.find(v);
+    return it == home_.end() ? m_.vertices[v] : it->second;
   }
 
   // 1. The position whose star has the fewest defects among: the doubles
@@ -257,7 +394,7 @@ class Rounding_repair {
     std::size_t best = defects(s);
     if (best == 0) return;
     Point_3<double> best_position = start;
-    const Point_3<double>& h = home_[v];
+    const Point_3<double> h = home(v);
     const auto try_each = [&](const std::array<std::vector<double>, 3>& values) {
       for (double x : values[0])
         for (double y : values[1])
@@ -317,7 +454,7 @@ class Rounding_repair {
   // The live faces that contain both a and b.
   std::vector<Index> faces_on_edge(Index a, Index b) const {
     std::vector<Index> out;
-    for (Index f : star_[a])
+    for (Index f : star_.view(a))
       if (!removed_[f] && std::find(m_.faces[f].begin(), m_.faces[f].end(), b) != m_.faces[f].end()) out.push_back(f);
     return out;
   }
@@ -423,7 +560,7 @@ class Rounding_repair {
   double collapse_change(Index v, Index u) const {
     double change = 0;
     const Point_3<double>& p = m_.vertices[v];
-    for (Index g : star_[v]) {
+    for (Index g : star_.view(v)) {
       if (removed_[g]) continue;
       const Triangle& t = m_.faces[g];
       if (std::find(t.begin(), t.end(), u) != t.end()) continue;  // removed by the collapse
@@ -481,9 +618,9 @@ class Rounding_repair {
   // u and w have exactly the two common neighbours of the faces on their edge.
   bool link_condition(Index u, Index w, const std::vector<Index>& on_edge) const {
     std::vector<Index> nu, nw;
-    for (Index g : star_[u])
+    for (Index g : star_.view(u))
       if (!removed_[g]) nu.insert(nu.end(), m_.faces[g].begin(), m_.faces[g].end());
-    for (Index g : star_[w])
+    for (Index g : star_.view(w))
       if (!removed_[g]) nw.insert(nw.end(), m_.faces[g].begin(), m_.faces[g].end());
     std::sort(nu.begin(), nu.end()), nu.erase(std::unique(nu.begin(), nu.end()), nu.end());
     std::sort(nw.begin(), nw.end()), nw.erase(std::unique(nw.begin(), nw.end()), nw.end());
@@ -507,7 +644,8 @@ class Rounding_repair {
 
   // ---- the repaired mesh -----------------------------------------------------------
 
-  // Live faces and the vertices they use, in their first order.
+  // Live faces and the vertices they use, in their first order (in place:
+  // each moves down, never up).
   void compact(Rounding_repair_maps& r) {
     const Index nv = static_cast<Index>(m_.vertices.size());
     std::vector<char> used(nv, 0);
@@ -515,42 +653,46 @@ class Rounding_repair {
       if (!removed_[f])
         for (Index v : m_.faces[f]) used[v] = 1;
     r.vertex_map.assign(nv, invalid_index);
-    std::vector<Point_3<double>> vertices;
+    Index kept = 0;
     for (Index v = 0; v < nv; ++v)
-      if (used[v]) r.vertex_map[v] = static_cast<Index>(vertices.size()), vertices.push_back(m_.vertices[v]);
+      if (used[v]) r.vertex_map[v] = kept, m_.vertices[kept++] = m_.vertices[v];
+    m_.vertices.resize(kept);
     face_index_.assign(m_.faces.size(), invalid_index);
-    std::vector<Triangle> faces;
+    r.face_origin.clear();
+    kept = 0;
     for (Index f = 0; f < m_.faces.size(); ++f) {
       if (removed_[f]) continue;
-      face_index_[f] = static_cast<Index>(faces.size());
+      face_index_[f] = kept;
       r.face_origin.push_back(f);
-      const Triangle& t = m_.faces[f];
-      faces.push_back({r.vertex_map[t[0]], r.vertex_map[t[1]], r.vertex_map[t[2]]});
+      const Triangle t = m_.faces[f];
+      m_.faces[kept++] = {r.vertex_map[t[0]], r.vertex_map[t[1]], r.vertex_map[t[2]]};
     }
+    m_.faces.resize(kept);
     std::vector<Edge> creases;
     for (const auto& [a, b] : creases_)
       if (used[a] && used[b]) creases.push_back({r.vertex_map[a], r.vertex_map[b]});
-    m_.vertices = std::move(vertices);
-    m_.faces = std::move(faces);
     m_.tags.set_creases(std::move(creases));
   }
 
   Mesh& m_;
   const std::vector<char>& movable_;
   Rounding_repair_options options_;
+  std::size_t region_limit_;
   K k_;
   double tolerance_ = 0;
-  std::vector<Point_3<double>> home_;
-  std::vector<K::Point_3> point_;
-  std::vector<std::vector<Index>> star_;
+  std::unordered_map<Index, Point_3<double>> home_;  // of the vertices moved
+  Vertex_stars star_;
   std::vector<char> removed_, active_, is_dirty_;
   std::vector<signed char> is_degenerate_;  // -1: not decided yet
   std::vector<Index> dirty_;
   std::vector<unsigned> stamp_;
   unsigned current_stamp_ = 0;
   std::vector<std::pair<Index, Index>> creases_;
-  Face_bvh bvh_;  // of the live faces at the round's start
+  Face_bvh bvh_;  // of live faces at the round's start: those near its defects, or all (whole_)
   std::vector<Index> live_faces_;
+  bool whole_ = false;
+  std::vector<Box_3> regions_;  // near the round's defects
+  Face_bvh regions_bvh_;
   std::vector<Index> face_index_;
 };
 

@@ -402,12 +402,16 @@ TEST(MeshBooleanThreads, TheResultDoesNotDependOnTheThreadCount) {
   }
   // A sphere against a copy turned by a few hundredths of a radian: the two
   // surfaces nearly coincide, so the narrow phase has several of its blocks
-  // of pairs (16384), each split between the threads.
+  // of pairs (16384), and the retriangulation several of its blocks of split
+  // faces (1024), each split between the threads.
   const Mesh turned = rigidly_moved(a, 0.05, 0.03, {0.002, 0.001, 0});
   const auto serial = boolean(a, turned, Op::union_of);
   const auto parallel = boolean(a, turned, Op::union_of, Filtered_exact_kernel{}, Boolean_options{.threads = 2});
   ASSERT_TRUE(serial.ok() && parallel.ok());
   EXPECT_GT(serial.counts.candidate_pairs, 2u * 16384);
+  EXPECT_GT(serial.counts.split_faces, 2u * 1024);
+  EXPECT_EQ(serial.counts.split_faces, parallel.counts.split_faces);
+  EXPECT_EQ(serial.provenance, parallel.provenance);
   EXPECT_EQ(serial.mesh.faces, parallel.mesh.faces);
   EXPECT_EQ(serial.mesh.vertices, parallel.mesh.vertices);
   EXPECT_EQ(serial.counts.intersecting_pairs, parallel.counts.intersecting_pairs);

@@ -449,45 +449,130 @@ class Boolean_engine {
       constraints(1, s.fb).segments.push_back({a, b});
     }
     curves_.finish(points_.size());
+    for (int m = 0; m < 2; ++m) pieces_[m].piece_of_face.assign(mesh_[m]->faces.size(), invalid_index);
+    // A face that is not split is a piece; a split face is retriangulated.
+    const auto corners_of = [&](int m, Index f) {
+      const Triangle& t = mesh_[m]->faces[f];
+      return std::array<Index, 3>{find(offset_[m] + t[0]), find(offset_[m] + t[1]), find(offset_[m] + t[2])};
+    };
+    const auto keep_whole = [&](int m, Index f) {
+      pieces_[m].piece_of_face[f] = static_cast<Index>(pieces_[m].triangles.size());
+      pieces_[m].triangles.push_back(corners_of(m, f));
+      pieces_[m].input_face.push_back(f);
+    };
+    // The constraints of split face f, its points listed once, not its corners.
+    const auto prepared = [&](int m, Index f) -> Face_constraints& {
+      Face_constraints& c = constraints(m, f);
+      c.corners = corners_of(m, f);
+      const auto not_corner = [&](std::vector<Index>& v) {
+        std::sort(v.begin(), v.end());
+        v.erase(std::unique(v.begin(), v.end()), v.end());
+        std::erase_if(v, [&](Index p) { return p == c.corners[0] || p == c.corners[1] || p == c.corners[2]; });
+      };
+      for (auto& on_edge : c.edge_points) not_corner(on_edge);
+      not_corner(c.interior_points);
+      return c;
+    };
+    const auto add_pieces = [&](int m, Index f, const Face_triangulation& tri) {
+      if (!tri.ok) {
+        r.failure = "retriangulation of face " + std::to_string(f) + " of " + (m == 0 ? "A" : "B") + ": " + tri.failure;
+        return false;
+      }
+      ++r.counts.split_faces;
+      for (const Triangle& x : tri.triangles) {
+        pieces_[m].triangles.push_back(x);
+        pieces_[m].input_face.push_back(f);
+      }
+      return true;
+    };
+    if (internal::thread_count(options_.threads) > 1 && concurrent_point_reads)
+      return retriangulate_in_parallel(slot, prepared, keep_whole, add_pieces);
     Face_triangulator<K, Point_table<K, OP>> triangulator(k_, points_);
     triangulator.set_delaunay(options_.delaunay_retriangulation);
-    for (int m = 0; m < 2; ++m) {
-      const Mesh& mesh = *mesh_[m];
-      pieces_[m].piece_of_face.assign(mesh.faces.size(), invalid_index);
-      for (Index f = 0; f < mesh.faces.size(); ++f) {
-        const Triangle& t = mesh.faces[f];
-        const std::array<Index, 3> corners{find(offset_[m] + t[0]), find(offset_[m] + t[1]), find(offset_[m] + t[2])};
-        // A face is split when it meets the other operand or a point lies on
-        // one of its edges: then it has a slot.
-        if (slot[m][f] == invalid_index) {
-          pieces_[m].piece_of_face[f] = static_cast<Index>(pieces_[m].triangles.size());
-          pieces_[m].triangles.push_back(corners);
-          pieces_[m].input_face.push_back(f);
-          continue;
-        }
-        Face_constraints& c = constraints(m, f);
-        const auto not_corner = [&](std::vector<Index>& v) {
-          std::sort(v.begin(), v.end());
-          v.erase(std::unique(v.begin(), v.end()), v.end());
-          v.erase(std::remove_if(v.begin(), v.end(), [&](Index p) { return p == corners[0] || p == corners[1] || p == corners[2]; }),
-                  v.end());
-        };
-        c.corners = corners;
-        for (auto& on_edge : c.edge_points) not_corner(on_edge);
-        not_corner(c.interior_points);
-        const Face_triangulation tri = triangulator.run(c, projection_axis(m, f));
-        if (!tri.ok) {
-          r.failure = "retriangulation of face " + std::to_string(f) + " of " + (m == 0 ? "A" : "B") + ": " + tri.failure;
+    for (int m = 0; m < 2; ++m)
+      for (Index f = 0; f < mesh_[m]->faces.size(); ++f) {
+        if (slot[m][f] == invalid_index)
+          keep_whole(m, f);
+        else if (!add_pieces(m, f, triangulator.run(prepared(m, f), projection_axis(m, f))))
           return false;
-        }
-        ++r.counts.split_faces;
-        for (const Triangle& x : tri.triangles) {
-          pieces_[m].triangles.push_back(x);
-          pieces_[m].input_face.push_back(f);
-        }
       }
-    }
     return true;
+  }
+
+  // Whether threads may read the kernel's points at once: relgeo's points are
+  // values; CGAL's lazy exact ones (Epeck's) compute and keep their exact
+  // value on a read, so their faces are retriangulated on one thread.
+  static constexpr bool concurrent_point_reads = !(requires { typename K::Cgal; } && K::has_exact_constructions);
+
+  // The split faces triangulated on the threads, a block at a time, in parts
+  // of a fixed size; each face's triangles are a function of its constraints
+  // and the points alone, and the pieces are added in face order as on one
+  // thread: the result does not depend on the thread count. The points of a
+  // block are made and approximated first (the point table makes an input
+  // vertex the kernel's point, and approximates a point, on its first read).
+  template <class Prepared, class Keep, class Add>
+  bool retriangulate_in_parallel(const std::array<std::vector<Index>, 2>& slot, Prepared& prepared, Keep& keep_whole,
+                                 Add& add_pieces) {
+    struct Job {
+      int m;
+      Index f;
+      const Face_constraints* constraints;
+      int axis;
+    };
+    constexpr std::size_t block = 1024, part = 64;
+    std::vector<Job> jobs;
+    std::vector<Face_triangulation> done;
+    std::vector<Index> used;
+    const auto run_block = [&] {
+      used.clear();
+      for (const Job& j : jobs) {
+        const Face_constraints& c = *j.constraints;
+        used.insert(used.end(), c.corners.begin(), c.corners.end());
+        for (const auto& on_edge : c.edge_points) used.insert(used.end(), on_edge.begin(), on_edge.end());
+        used.insert(used.end(), c.interior_points.begin(), c.interior_points.end());
+        for (const auto& s : c.segments) used.insert(used.end(), s.begin(), s.end());
+      }
+      std::sort(used.begin(), used.end());
+      used.erase(std::unique(used.begin(), used.end()), used.end());
+      for (Index p : used) (void)points_[p];  // the table grows here, on one thread
+      // Each point approximated by one thread (one entry of the table each).
+      internal::parallel_for_each_index((used.size() + 511) / 512, options_.threads, [&](std::size_t i) {
+        for (std::size_t j = i * 512; j < std::min(used.size(), (i + 1) * 512); ++j)
+          (void)points_.approximation(used[j]);
+      });
+      done.assign(jobs.size(), {});
+      internal::parallel_for_each_index((jobs.size() + part - 1) / part, options_.threads, [&](std::size_t i) {
+        Face_triangulator<K, Point_table<K, OP>> triangulator(k_, points_);
+        triangulator.set_delaunay(options_.delaunay_retriangulation);
+        for (std::size_t j = i * part; j < std::min(jobs.size(), (i + 1) * part); ++j)
+          done[j] = triangulator.run(*jobs[j].constraints, jobs[j].axis);
+      });
+    };
+    // Faces in order; a block of split faces is triangulated when full, and
+    // the faces up to its last are added then.
+    std::array<Index, 2> added{0, 0};
+    const auto add_up_to = [&](int m_end, Index f_end) {  // every face before (m_end, f_end)
+      std::size_t next = 0;
+      for (int m = 0; m < 2; ++m)
+        for (Index& f = added[m]; (m < m_end || (m == m_end && f < f_end)) && f < mesh_[m]->faces.size(); ++f) {
+          if (slot[m][f] == invalid_index)
+            keep_whole(m, f);
+          else if (!add_pieces(m, f, done[next++]))
+            return false;
+        }
+      return true;
+    };
+    for (int m = 0; m < 2; ++m)
+      for (Index f = 0; f < mesh_[m]->faces.size(); ++f) {
+        if (slot[m][f] == invalid_index) continue;
+        jobs.push_back({m, f, &prepared(m, f), projection_axis(m, f)});
+        if (jobs.size() < block) continue;
+        run_block();
+        if (!add_up_to(m, f + 1)) return false;
+        jobs.clear();
+      }
+    run_block();
+    return add_up_to(2, 0);
   }
 
   // The axis to project face f of operand m along: the one along which its

@@ -301,6 +301,22 @@ TEST(RoundingRepair, BadInputIsRefused) {
   Mesh_double not_finite = m;
   not_finite.vertices[2].y = std::nan("");
   EXPECT_THROW(repair_rounding(not_finite, std::vector<char>(m.vertices.size(), 1)), Invalid_input);
+  for (const double tolerance : {std::nan(""), -1e-9, std::numeric_limits<double>::infinity()})
+    EXPECT_THROW(repair_rounding(m, std::vector<char>(m.vertices.size(), 1), {.tolerance = tolerance}), Invalid_input)
+        << tolerance;
+}
+
+// A tolerance whose margin around the defects overflows: the repair searches
+// every face instead of failing (the regions of its hierarchy are not finite).
+TEST(RoundingRepair, AHugeToleranceStillRepairs) {
+  auto r = boolean(torus_operand(), sphere_operand(), Op::union_of, Filtered_exact_kernel{}, nearest_rounding());
+  ASSERT_TRUE(r.ok());
+  std::vector<char> movable(r.mesh.vertices.size(), 0);
+  for (Index v = r.first_new_vertex; v < movable.size(); ++v) movable[v] = 1;
+  Rounding_repair_report report;
+  ASSERT_NO_THROW(report = repair_rounding(r.mesh, movable, {.tolerance = 1e308}));
+  EXPECT_GT(report.rounds, 0);
+  EXPECT_TRUE(report.converged());
 }
 
 }  // namespace

@@ -513,9 +513,7 @@ class Boolean_engine {
   template <class Prepared, class Keep, class Add>
   bool retriangulate_in_parallel(const std::array<std::vector<Index>, 2>& slot, Prepared& prepared, Keep& keep_whole,
                                  Add& add_pieces) {
-    struct Job {
-      int m;
-      Index f;
+    struct Job {  // a split face
       const Face_constraints* constraints;
       int axis;
     };
@@ -565,7 +563,7 @@ class Boolean_engine {
     for (int m = 0; m < 2; ++m)
       for (Index f = 0; f < mesh_[m]->faces.size(); ++f) {
         if (slot[m][f] == invalid_index) continue;
-        jobs.push_back({m, f, &prepared(m, f), projection_axis(m, f)});
+        jobs.push_back({&prepared(m, f), projection_axis(m, f)});
         if (jobs.size() < block) continue;
         run_block();
         if (!add_up_to(m, f + 1)) return false;

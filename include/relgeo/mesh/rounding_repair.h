@@ -35,6 +35,7 @@
 #include <limits>
 #include <numeric>
 #include <span>
+#include <string>
 #include <type_traits>
 #include <unordered_map>
 #include <utility>
@@ -253,6 +254,13 @@ class Rounding_repair {
     regions_.clear();
     for (std::size_t i = 0; i < std::min(defect_faces.size(), region_limit_); ++i)
       regions_.push_back(widened(two_rings_box(defect_faces[i])));
+    // A tolerance so large (or NaN) that a region is not finite: no region.
+    const auto finite = [](const Box_3& r) {
+      for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(r.lo[k]) || !std::isfinite(r.hi[k])) return false;
+      return true;
+    };
+    if (!std::all_of(regions_.begin(), regions_.end(), finite)) regions_.clear();
     regions_bvh_ = Face_bvh(regions_);
     std::vector<Box_3> boxes;
     live_faces_.clear();
@@ -716,6 +724,9 @@ inline Rounding_repair_report repair_rounding(Triangle_mesh<Point_3<double>>& m,
                                               Rounding_repair_maps* maps = nullptr) {
   if (movable.size() != m.vertices.size())
     throw Precondition_violation("repair_rounding: one movable flag per vertex");
+  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
+    throw Invalid_input("repair_rounding: the tolerance must be finite and not negative (it is " +
+                        std::to_string(options.tolerance) + ")");
   for (const Triangle& t : m.faces)
     for (Index v : t)
       if (v >= m.vertices.size()) throw Invalid_input("repair_rounding: a face index is out of range");

@@ -719,6 +719,8 @@ class Rounding_repair {
 /// \pre m is edge-manifold where it is repaired (non-manifold edges are left
 /// alone), movable.size() == m.vertices.size().
 /// `maps`, when given, receives how vertices and faces were renumbered.
+/// \throws Invalid_input for a face index out of range, a coordinate that
+/// is not finite, or a tolerance that is negative, NaN or infinite.
 inline Rounding_repair_report repair_rounding(Triangle_mesh<Point_3<double>>& m, const std::vector<char>& movable,
                                               const Rounding_repair_options& options = {},
                                               Rounding_repair_maps* maps = nullptr) {

@@ -160,10 +160,14 @@ std::vector<Subject> subjects() {
          return relgeo_run<relgeo::Filtered_exact_kernel>(a, b, op, true, 1, true);
        }, false, "relgeo filtered"},
 #if defined(RELGEO_HAS_TBB) && RELGEO_HAS_TBB
-      // The operand checks, the broad and the narrow phase on 2 threads
-      // (TBB); the rest of the Boolean is serial.
+      // The operand checks, the broad and the narrow phase, the
+      // retriangulation and (with the defaults) the output's validation on
+      // 2 threads (TBB); the rest of the Boolean is serial.
       {"relgeo filtered, 2 threads", [](const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
          return relgeo_run<relgeo::Filtered_exact_kernel>(a, b, op, true, 2);
+       }, false, "CGAL::corefine Epick"},
+      {"relgeo filtered, defaults, 2 threads", [](const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {
+         return relgeo_run<relgeo::Filtered_exact_kernel>(a, b, op, true, 2, false, true);
        }, false, "CGAL::corefine Epick"},
 #endif
       {"relgeo exact", [](const Mesh& a, const Mesh& b, relgeo::Boolean_operation op) {

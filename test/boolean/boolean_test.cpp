@@ -412,6 +412,8 @@ TEST(MeshBooleanThreads, TheResultDoesNotDependOnTheThreadCount) {
   EXPECT_GT(serial.counts.split_faces, 2u * 1024);
   EXPECT_EQ(serial.counts.split_faces, parallel.counts.split_faces);
   EXPECT_EQ(serial.provenance, parallel.provenance);
+  EXPECT_EQ(serial.validation.summary(), parallel.validation.summary());  // the validation on the threads too
+  EXPECT_TRUE(parallel.validation.is_valid_solid());
   EXPECT_EQ(serial.mesh.faces, parallel.mesh.faces);
   EXPECT_EQ(serial.mesh.vertices, parallel.mesh.vertices);
   EXPECT_EQ(serial.counts.intersecting_pairs, parallel.counts.intersecting_pairs);

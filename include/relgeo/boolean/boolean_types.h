@@ -154,11 +154,13 @@ struct Boolean_options {
   /// faces of one operand: that operand's exact self-intersection test
   /// already decided them (Boolean_counts::unchanged_certified_faces).
   Operand_certificate certified_operands{};
-  /// Threads for the operand checks, the broad and the narrow phase and the
+  /// Threads for the operand checks, the broad and the narrow phase, the
   /// retriangulation (not under CGAL's lazy exact kernels: Epeck's points
-  /// change when read) (1: serial; 0: every hardware thread; more than one
-  /// only when the target links relgeo::tbb, see mesh/internal/parallel.h).
-  /// The result does not depend on it.
+  /// change when read) and the output's validation (unless
+  /// `validation.threads` is set to another count than 1) (1: serial; 0:
+  /// every hardware thread; more than one only when the target links
+  /// relgeo::tbb, see mesh/internal/parallel.h). The result does not depend
+  /// on it.
   int threads = 1;
 };
 

@@ -883,15 +883,19 @@ class Boolean_engine {
   // (Boolean_output::halfedge_opposites): its next Boolean reuses them.
   void validate(Result& r) const {
     std::vector<Index> opposites;
+    // On the Boolean's threads, unless the validation's options ask for
+    // another count than the default one.
+    Solid_validation_options o = options_.validation;
+    if (o.threads == 1) o.threads = options_.threads;
     const auto validate_with = [&](const auto& mesh, const auto& kernel) {
       if (!operands_certified()) {
-        r.validation = internal::validate_solid(mesh, kernel, options_.validation, nullptr, &opposites);
+        r.validation = internal::validate_solid(mesh, kernel, o, nullptr, &opposites);
         return;
       }
       const Certified_faces certified = unchanged_operand_faces(r);
       r.counts.unchanged_certified_faces = static_cast<std::size_t>(
           std::count_if(certified.group.begin(), certified.group.end(), [](std::uint8_t g) { return g != 0; }));
-      r.validation = internal::validate_solid(mesh, kernel, options_.validation, &certified, &opposites);
+      r.validation = internal::validate_solid(mesh, kernel, o, &certified, &opposites);
     };
     if constexpr (exact_operands)
       validate_with(r.exact_mesh(), k_);

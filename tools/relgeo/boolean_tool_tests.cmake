@@ -22,6 +22,13 @@ relgeo_tool_test(boolean_difference_exact 0 STDOUT_JSON
 relgeo_tool_test(boolean_oracle_cgal 0 STDOUT_JSON
   ARGS boolean ${_cube} ${_offset} --op union --oracle cgal --format json
   STDOUT_MATCHES "\"oracle\": " "\"cgal_volume\": 1.671875," "\"symmetric_difference_volume\": 0\\.0,")
+# A small tetrahedron inside a large one, its apex on the large one's face:
+# the difference is pinched at that point (not a manifold, as the validation
+# says), so the oracle gives CGAL's volume and no symmetric difference.
+relgeo_tool_test(boolean_oracle_pinched_result 0 STDOUT_JSON
+  ARGS boolean ${_data}/tetrahedron.off ${_data}/tetrahedron_pinching.off --op difference --oracle cgal --format json
+  STDOUT_MATCHES "\"status\": \"ok\"," "\"valid_solid\": false," "\"summary\": \"vertex_manifold fail \\(1\\)"
+                 "\"symmetric_difference_volume\": null")
 relgeo_tool_test(boolean_xor 0 ARGS boolean ${_cube} ${_offset} --op xor STDOUT_MATCHES "volume +1.34375")
 # Touching cubes: exact under filtered; the fail-safe kernel cannot decide exact contact (exit 1).
 relgeo_tool_test(boolean_touching_filtered 0 STDOUT_JSON

@@ -82,19 +82,22 @@ Oracle_comparison compare_with_cgal(const Mesh_double& a, const Mesh_double& b, 
     c.hausdorff = std::nan("");  // a non-manifold mesh (two solids sharing an edge): Surface_mesh cannot hold it
   }
   // The volume of the difference between the two solids, by relgeo's exact
-  // Boolean (operands not checked: a rounded output may touch itself).
-  if (op != Boolean_operation::symmetric_difference) {
-    const auto x = relgeo::boolean(result, cgal, Boolean_operation::symmetric_difference, Filtered_exact_kernel{},
-                                   Boolean_options{.check_operands = false, .rounding = Output_rounding::nearest});
-    if (x.ok()) {
-      double v = 0;
-      for (const auto& f : x.mesh.faces) {
-        const auto &p = x.mesh.vertices[f[0]], &q = x.mesh.vertices[f[1]], &r = x.mesh.vertices[f[2]];
-        v += p.x * (q.y * r.z - q.z * r.y) - p.y * (q.x * r.z - q.z * r.x) + p.z * (q.x * r.y - q.y * r.x);
+  // Boolean (operands not checked: a rounded output may touch itself). A
+  // result that is not a manifold (a regularised result pinched at a vertex
+  // or along an edge) is no operand: no volume then, as no distance above.
+  if (op != Boolean_operation::symmetric_difference) try {
+      const auto x = relgeo::boolean(result, cgal, Boolean_operation::symmetric_difference, Filtered_exact_kernel{},
+                                     Boolean_options{.check_operands = false, .rounding = Output_rounding::nearest});
+      if (x.ok()) {
+        double v = 0;
+        for (const auto& f : x.mesh.faces) {
+          const auto &p = x.mesh.vertices[f[0]], &q = x.mesh.vertices[f[1]], &r = x.mesh.vertices[f[2]];
+          v += p.x * (q.y * r.z - q.z * r.y) - p.y * (q.x * r.z - q.z * r.x) + p.z * (q.x * r.y - q.y * r.x);
+        }
+        c.symmetric_difference_volume = std::abs(v / 6);
       }
-      c.symmetric_difference_volume = std::abs(v / 6);
+    } catch (const Invalid_mesh&) {
     }
-  }
   return c;
 }
 

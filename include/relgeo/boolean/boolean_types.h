@@ -155,8 +155,8 @@ struct Boolean_options {
   /// already decided them (Boolean_counts::unchanged_certified_faces).
   Operand_certificate certified_operands{};
   /// Threads for the operand checks, the broad and the narrow phase, the
-  /// retriangulation (not under CGAL's lazy exact kernels: Epeck's points
-  /// change when read) and the output's validation (unless
+  /// retriangulation (not under CGAL's lazy exact kernels, whose points
+  /// compute their exact value when read) and the output's validation (unless
   /// `validation.threads` is set to another count than 1) (1: serial; 0:
   /// every hardware thread; more than one only when the target links
   /// relgeo::tbb, see mesh/internal/parallel.h). The result does not depend

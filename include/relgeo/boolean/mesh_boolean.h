@@ -499,9 +499,10 @@ class Boolean_engine {
     return true;
   }
 
-  // Whether threads may read the kernel's points at once: relgeo's points are
-  // values; CGAL's lazy exact ones (Epeck's) compute and keep their exact
-  // value on a read, so their faces are retriangulated on one thread.
+  // Whether the retriangulation reads the kernel's points on several threads:
+  // relgeo's points are values; CGAL's lazy exact ones (Epeck's) compute and
+  // keep their exact value on a read, which only CGAL 5.4 and later make safe
+  // (std::call_once under CGAL_HAS_THREADS), so their faces stay on one thread.
   static constexpr bool concurrent_point_reads = !(requires { typename K::Cgal; } && K::has_exact_constructions);
 
   // The split faces triangulated on the threads, a block at a time, in parts

@@ -56,6 +56,28 @@ def test_local_cluster_table_equals_the_serial_one(serial_rows):
     assert deterministic(rows) == deterministic(serial_rows)
 
 
+def worker_settings(_task):
+    import dask
+
+    return {"MALLOC_ARENA_MAX": os.environ.get("MALLOC_ARENA_MAX"),
+            "tick": dask.config.get("distributed.admin.tick.interval"),
+            "profile": dask.config.get("distributed.worker.profile.enabled")}
+
+
+def test_the_embedded_cluster_tunes_its_workers_and_leaves_this_environment_as_found():
+    import cloudpickle
+
+    cloudpickle.register_pickle_by_value(sys.modules[__name__])  # the workers cannot import this test file
+    before = dict(os.environ)
+    rows = sweep.run_tasks(worker_settings, [0, 1], n_workers=2, progress=False)
+    assert rows == [{"MALLOC_ARENA_MAX": "1", "tick": "200ms", "profile": False}] * 2
+    assert dict(os.environ) == before
+    # a worker of several task threads keeps glibc's arenas
+    import dask
+
+    assert "MALLOC_ARENA_MAX" not in sweep._embedded_cluster_config(dask.config, 2).get(sweep._PRE_SPAWN, {})
+
+
 def free_port():
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))

@@ -126,13 +126,11 @@ def _embedded_cluster_config(config, threads_per_worker):
       own, on which the exact kernel's many small GMP allocations ran 2-8%
       slower than on the main thread's.
     The memory monitor (and so the memory limit) keeps Dask's defaults."""
-    settings = {"distributed.worker.profile.enabled": False, "distributed.admin.tick.interval": "200ms",
-                "distributed.admin.system-monitor.interval": "2s"}
+    environ = dict(config.get(_PRE_SPAWN, default={}) or {})  # Dask's own, kept
     if threads_per_worker == 1:
-        environ = dict(config.get(_PRE_SPAWN, default={}) or {})
         environ.setdefault("MALLOC_ARENA_MAX", 1)
-        settings[_PRE_SPAWN] = environ
-    return settings
+    return {"distributed.worker.profile.enabled": False, "distributed.admin.tick.interval": "200ms",
+            "distributed.admin.system-monitor.interval": "2s", _PRE_SPAWN: environ}
 
 
 @contextlib.contextmanager
@@ -144,8 +142,7 @@ def _client(scheduler, n_workers, threads_per_worker):
         settings = _embedded_cluster_config(dask.config, threads_per_worker)
         # Dask's nannies run in this process and set their pre-spawn variables
         # in its environment; they are put back as they were afterwards.
-        keys = dask.config.get(_PRE_SPAWN, default={}) or {}
-        saved = {key: os.environ.get(key) for key in set(keys) | set(settings.get(_PRE_SPAWN, {}))}
+        saved = {key: os.environ.get(key) for key in settings[_PRE_SPAWN]}
         try:
             with dask.config.set(settings), \
                     LocalCluster(n_workers=n_workers, threads_per_worker=threads_per_worker, processes=True,

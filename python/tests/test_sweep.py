@@ -75,7 +75,7 @@ def test_the_embedded_cluster_tunes_its_workers_and_leaves_this_environment_as_f
     # a worker of several task threads keeps glibc's arenas
     import dask
 
-    assert "MALLOC_ARENA_MAX" not in sweep._embedded_cluster_config(dask.config, 2).get(sweep._PRE_SPAWN, {})
+    assert "MALLOC_ARENA_MAX" not in sweep._embedded_cluster_config(dask.config, 2)[sweep._PRE_SPAWN]
 
 
 def free_port():

@@ -122,6 +122,17 @@ TEST(SolidValidationCgal, DataSetMeshesAgreeWithCgalEpeck) {
       EXPECT_FALSE(r.is_valid_solid());
       continue;
     }
+    // The Euler counts (read off the topology on an edge-manifold mesh)
+    // equal those of the distinct vertex pairs.
+    {
+      const internal::Face_components comps = internal::face_components(d.mesh.faces, d.mesh.vertices.size());
+      std::size_t edges = 0;
+      long long characteristic = 0;
+      for (const internal::Euler_counts& c : internal::euler_counts(d.mesh.faces, d.mesh.vertices.size(), comps))
+        edges += c.edges, characteristic += c.characteristic();
+      EXPECT_EQ(r.edges, edges);
+      EXPECT_EQ(r.euler_characteristic, characteristic);
+    }
     // Closedness.
     EXPECT_EQ(r.closed.passed(), cgal.closed) << r.summary();
     (cgal.closed ? closed : open) += 1;

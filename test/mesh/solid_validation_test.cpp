@@ -225,6 +225,42 @@ TEST(SolidValidation, NonManifoldEdgeAndVertexAreLocated) {
   EXPECT_EQ(rv.euler_characteristic, 3);            // 15 - 36 + 24
 }
 
+TEST(SolidValidation, EulerCountsReadOffTheTopologyEqualThoseOfTheEdgeList) {
+  Mesh_d open = cube();
+  open.faces.pop_back();
+  Mesh_d pinched = cube();  // two cubes sharing vertex 7: edge-manifold, not vertex-manifold
+  const Mesh_d other = cube(1, {1, 1, 1});
+  std::vector<Index> map(8, 7);
+  for (Index v = 1; v < 8; ++v)
+    map[v] = static_cast<Index>(pinched.vertices.size()), pinched.vertices.push_back(other.vertices[v]);
+  for (const Triangle& t : other.faces) pinched.faces.push_back({map[t[0]], map[t[1]], map[t[2]]});
+  Mesh_d unused = disjoint_union(torus(10, 6), translated(cube_sphere(4), 7, 0, 0));
+  unused.vertices.push_back({9, 9, 9});  // an isolated vertex counts in no component
+  for (const Mesh_d& m : {cube(), open, pinched, unused}) {
+    std::vector<Mesh_issue> issues;
+    const Mesh_topology t = Mesh_topology::build_checked(m.vertices.size(), m.faces, issues);
+    for (const Mesh_issue& i : issues) ASSERT_EQ(i.defect, Mesh_defect::non_manifold_vertex);
+    const internal::Face_components c = internal::face_components(m.faces, m.vertices.size());
+    const auto listed = internal::euler_counts(m.faces, m.vertices.size(), c);
+    const auto read = internal::euler_counts(m.faces, m.vertices.size(), c, t);
+    ASSERT_TRUE(read.has_value());
+    ASSERT_EQ(read->size(), listed.size());
+    for (std::size_t k = 0; k < listed.size(); ++k) {
+      EXPECT_EQ((*read)[k].vertices, listed[k].vertices);
+      EXPECT_EQ((*read)[k].edges, listed[k].edges);
+      EXPECT_EQ((*read)[k].faces, listed[k].faces);
+    }
+  }
+  // A face that repeats a vertex has no adjacency: the edge list counts it.
+  Mesh_d repeated = cube();
+  repeated.faces.push_back({0, 0, 1});
+  std::vector<Mesh_issue> issues;
+  const Mesh_topology t = Mesh_topology::build_checked(repeated.vertices.size(), repeated.faces, issues);
+  const internal::Face_components c = internal::face_components(repeated.faces, repeated.vertices.size());
+  EXPECT_FALSE(internal::euler_counts(repeated.faces, repeated.vertices.size(), c, t).has_value());
+  EXPECT_EQ(validate_solid(repeated).euler_characteristic, 8 - 18 + 13);
+}
+
 TEST(SolidValidation, FlippedFaceIsAnInconsistentOrientation) {
   Mesh_d m = cube();
   std::swap(m.faces[0][1], m.faces[0][2]);  // {0, 3, 2}

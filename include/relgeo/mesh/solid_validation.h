@@ -97,11 +97,17 @@ inline void sort_mesh_issues(const Mesh_report& mr, const Solid_validation_optio
   else not_checked(r.closed, "turned off (Mesh_check_options::require_closed)");
 }
 
-// Components, Euler characteristic, genus. \pre valid indices.
+// Components, Euler characteristic, genus. \pre valid indices, `t` the
+// faces' topology (combinatorial_mesh_report's).
 template <class P>
-Face_components report_topology(const Triangle_mesh<P>& m, const Solid_validation_options& o, Solid_report& r) {
+Face_components report_topology(const Triangle_mesh<P>& m, const Mesh_topology& t, const Solid_validation_options& o,
+                                Solid_report& r) {
   Face_components comps = face_components(m.faces, m.vertices.size());
-  const std::vector<Euler_counts> counts = euler_counts(m.faces, m.vertices.size(), comps);
+  std::optional<std::vector<Euler_counts>> from_topology;
+  if (r.edge_manifold.passed() && r.consistently_oriented.passed())
+    from_topology = euler_counts(m.faces, m.vertices.size(), comps, t);
+  const std::vector<Euler_counts> counts =
+      from_topology ? std::move(*from_topology) : euler_counts(m.faces, m.vertices.size(), comps);
   const bool surface = r.closed.passed() && r.edge_manifold.passed() && r.vertex_manifold.passed() &&
                        r.consistently_oriented.passed() && r.non_degenerate_faces.count == 0;
   Euler_counts all;
@@ -214,7 +220,7 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
     r.non_degenerate_faces.note = "collinearity not checked: " + why;
     internal::not_checked(r.self_intersection_free, why);
     internal::not_checked(r.outward_oriented, why);
-    if (indices_ok) (void)internal::report_topology(m, o, r);
+    if (indices_ok) (void)internal::report_topology(m, topology, o, r);
     return r;
   }
   // Degenerate faces under K (repeated indices are already recorded).
@@ -249,7 +255,7 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
     internal::conclude(r.non_degenerate_faces, undecided_face && !failed);
   }
 
-  const internal::Face_components comps = internal::report_topology(m, o, r);
+  const internal::Face_components comps = internal::report_topology(m, topology, o, r);
   const internal::Signed_volumes volumes = internal::report_volume(m, comps, o, r);
 
   if (!o.check_self_intersections) {

@@ -234,9 +234,9 @@ TEST(SolidValidation, EulerCountsReadOffTheTopologyEqualThoseOfTheEdgeList) {
   for (Index v = 1; v < 8; ++v)
     map[v] = static_cast<Index>(pinched.vertices.size()), pinched.vertices.push_back(other.vertices[v]);
   for (const Triangle& t : other.faces) pinched.faces.push_back({map[t[0]], map[t[1]], map[t[2]]});
-  Mesh_d unused = disjoint_union(torus(10, 6), translated(cube_sphere(4), 7, 0, 0));
-  unused.vertices.push_back({9, 9, 9});  // an isolated vertex counts in no component
-  for (const Mesh_d& m : {cube(), open, pinched, unused}) {
+  Mesh_d two_with_isolated = disjoint_union(torus(10, 6), translated(cube_sphere(4), 7, 0, 0));
+  two_with_isolated.vertices.push_back({9, 9, 9});  // an isolated vertex counts in no component
+  for (const Mesh_d& m : {cube(), open, pinched, two_with_isolated}) {
     std::vector<Mesh_issue> issues;
     const Mesh_topology t = Mesh_topology::build_checked(m.vertices.size(), m.faces, issues);
     for (const Mesh_issue& i : issues) ASSERT_EQ(i.defect, Mesh_defect::non_manifold_vertex);

@@ -137,6 +137,12 @@ class Triangle_intersector {
     for (int attempt = 0;; ++attempt) {
       std::array<Certified_sign, 3> sa, sb;
       for (int i = 0; i < 3; ++i) sa[i] = orient3_(b[0], b[1], b[2], a[i]);
+      // a strictly on one side of b's plane: disjoint whatever b's signs (as
+      // below), without them. Most pairs of a broad phase end here.
+      if (separated(sa)) {
+        r.kind = Triangle_intersection_kind::disjoint;
+        return r;
+      }
       for (int i = 0; i < 3; ++i) sb[i] = orient3_(a[0], a[1], a[2], b[i]);
       const int ambiguous = first_uncertain(sa) >= 0 ? 0 : (first_uncertain(sb) >= 0 ? 1 : -1);
       if (ambiguous < 0) {

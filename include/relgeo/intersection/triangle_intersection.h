@@ -136,21 +136,22 @@ class Triangle_intersector {
     degenerate_input_ = false;
     for (int attempt = 0;; ++attempt) {
       std::array<Certified_sign, 3> sa, sb;
+      // A triangle strictly on one side of the other's plane: disjoint,
+      // whatever the other signs are (decided or not). Tested for a first:
+      // most pairs of a broad phase end after its three orientations.
       for (int i = 0; i < 3; ++i) sa[i] = orient3_(b[0], b[1], b[2], a[i]);
-      // a strictly on one side of b's plane: disjoint whatever b's signs (as
-      // below), without them. Most pairs of a broad phase end here.
       if (separated(sa)) {
         r.kind = Triangle_intersection_kind::disjoint;
         return r;
       }
       for (int i = 0; i < 3; ++i) sb[i] = orient3_(a[0], a[1], a[2], b[i]);
+      if (separated(sb)) {
+        r.kind = Triangle_intersection_kind::disjoint;
+        return r;
+      }
       const int ambiguous = first_uncertain(sa) >= 0 ? 0 : (first_uncertain(sb) >= 0 ? 1 : -1);
       if (ambiguous < 0) {
         run_decided(a, b, sa, sb, r);
-        return r;
-      }
-      if (separated(sa) || separated(sb)) {  // decided signs alone separate them
-        r.kind = Triangle_intersection_kind::disjoint;
         return r;
       }
       if (!can_perturb() || attempt >= o_.perturbation_attempts || r.perturbations.size() == 6) {
@@ -247,12 +248,9 @@ class Triangle_intersector {
     std::uint8_t edge = 0;
   };
 
+  // \pre every sign certain, neither triangle separated by the other's plane (run).
   void run_decided(const Triangle& a, const Triangle& b, const std::array<Certified_sign, 3>& sa,
                    const std::array<Certified_sign, 3>& sb, Result& r) {
-    if (separated(sa) || separated(sb)) {
-      r.kind = Triangle_intersection_kind::disjoint;
-      return;
-    }
     const auto zero = [](const std::array<Certified_sign, 3>& s) {
       return certainly(s[0], Certified_sign::zero) && certainly(s[1], Certified_sign::zero) &&
              certainly(s[2], Certified_sign::zero);

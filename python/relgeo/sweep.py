@@ -111,7 +111,7 @@ def _shards(tasks):
 _PRE_SPAWN = "distributed.nanny.pre-spawn-environ"
 
 
-def _embedded_cluster_config(config, threads_per_worker):
+def _embedded_cluster_config(threads_per_worker):
     """Dask settings for the embedded LocalCluster, which has no dashboard and
     shares the machine's cores with its tasks (doc/python.md, "Sweeps on
     Dask", has the measurements behind each):
@@ -126,7 +126,9 @@ def _embedded_cluster_config(config, threads_per_worker):
       own, on which the exact kernel's many small GMP allocations ran 2-8%
       slower than on the main thread's.
     The memory monitor (and so the memory limit) keeps Dask's defaults."""
-    environ = dict(config.get(_PRE_SPAWN, default={}) or {})  # Dask's own, kept
+    import dask
+
+    environ = dict(dask.config.get(_PRE_SPAWN, default={}) or {})  # Dask's own, kept
     if threads_per_worker == 1:
         environ.setdefault("MALLOC_ARENA_MAX", 1)
     return {"distributed.worker.profile.enabled": False, "distributed.admin.tick.interval": "200ms",
@@ -139,7 +141,7 @@ def _client(scheduler, n_workers, threads_per_worker):
     from dask.distributed import Client, LocalCluster
 
     if scheduler is None:
-        settings = _embedded_cluster_config(dask.config, threads_per_worker)
+        settings = _embedded_cluster_config(threads_per_worker)
         # Dask's nannies run in this process and set their pre-spawn variables
         # in its environment; they are put back as they were afterwards.
         saved = {key: os.environ.get(key) for key in settings[_PRE_SPAWN]}

@@ -73,9 +73,7 @@ def test_the_embedded_cluster_tunes_its_workers_and_leaves_this_environment_as_f
     assert rows == [{"MALLOC_ARENA_MAX": "1", "tick": "200ms", "profile": False}] * 2
     assert dict(os.environ) == before
     # a worker of several task threads keeps glibc's arenas
-    import dask
-
-    assert "MALLOC_ARENA_MAX" not in sweep._embedded_cluster_config(dask.config, 2)[sweep._PRE_SPAWN]
+    assert "MALLOC_ARENA_MAX" not in sweep._embedded_cluster_config(2)[sweep._PRE_SPAWN]
 
 
 def free_port():

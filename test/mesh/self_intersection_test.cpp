@@ -257,4 +257,48 @@ TEST(ProjectedPatches, CheckSolidFindsThePairwiseTestsPairsOnDentedSolids) {
   EXPECT_GT(with_crossings, 0);
 }
 
+// ---- the caller's certificates (Certified_faces: the Boolean's output) ----
+
+// The certified search finds every pair the pairwise test finds but those
+// of two faces of one group, whatever the groups and the thread count: on
+// a soup of random triangles crossing each other often, the descent that
+// stops at certified nodes still meets every open face, and the cross pairs
+// (from the caller's list only) are all tested.
+TEST(CertifiedFaces, TheSearchLeavesOutOnlyThePairsWithinOneGroup) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> at(0, 4), offset(-0.6, 0.6);
+  std::uniform_int_distribution<int> group_of(0, 2);
+  Mesh_d m;
+  for (Index f = 0; f < 600; ++f) {
+    const Point_3<double> c{at(rng), at(rng), at(rng)};
+    for (int i = 0; i < 3; ++i) m.vertices.push_back({c.x + offset(rng), c.y + offset(rng), c.z + offset(rng)});
+    m.faces.push_back({3 * f, 3 * f + 1, 3 * f + 2});
+  }
+  const std::vector<Face_pair> all = find_self_intersections(m).pairs;
+  const Filtered_exact_kernel k;
+  const internal::Kernel_points<Filtered_exact_kernel, Point_3<double>> point(m.vertices, k);
+  const std::vector<unsigned char> skip(m.faces.size(), 0);
+  const Face_bvh bvh(m);
+  for (int trial = 0; trial < 4; ++trial) {
+    internal::Certified_faces certified;
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+      certified.group.push_back(static_cast<std::uint8_t>(trial == 0 ? 1 + f % 2 : group_of(rng)));
+    const auto& group = certified.group;
+    bvh.for_each_overlapping_pair([&](Index f, Index g) {
+      if (group[f] && group[g] && group[f] != group[g])
+        certified.cross_pairs.push_back({std::min(f, g), std::max(f, g)});
+    });
+    std::vector<Face_pair> expected;
+    for (const Face_pair& p : all)
+      if (!(group[p.first] && group[p.first] == group[p.second])) expected.push_back(p);
+    ASSERT_FALSE(expected.empty());
+    for (const int threads : {1, 2}) {
+      Self_intersections found;
+      internal::find_self_intersections(k, point, m.faces, skip, bvh, certified, threads, found);
+      EXPECT_EQ(found.pairs, expected) << "trial " << trial << ", " << threads << " threads";
+      EXPECT_TRUE(found.undecided.empty());
+    }
+  }
+}
+
 }  // namespace

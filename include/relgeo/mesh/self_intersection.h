@@ -143,42 +143,40 @@ struct Certified_faces {
 };
 
 /// The narrow phase on what the certificates leave open: every pair with a
-/// face outside the groups (those faces' boxes searched in `bvh`), and the
-/// cross pairs. Two faces of one group meet only where they share a vertex
-/// or an edge, as in their certified mesh; pairs sharing a vertex flagged
-/// in `embedded` are decided by that certificate. `boxes`: the faces'
-/// boxes, in face order.
+/// face outside the groups, found by `bvh`'s own descent (the hierarchy of
+/// all the faces), which stops at pairs of nodes holding certified faces
+/// only; and the cross pairs. Two faces of one group meet only where they
+/// share a vertex or an edge, as in their certified mesh; pairs sharing a
+/// vertex flagged in `embedded` are decided by that certificate.
 template <Kernel K, class Points>
 void find_self_intersections(const K& k, const Points& point, const std::vector<Triangle>& faces,
                              const std::vector<unsigned char>& skip, const Face_bvh& bvh,
-                             const std::vector<Box_3>& boxes, const Certified_faces& certified, int threads,
-                             Self_intersections& out, const std::vector<unsigned char>* embedded = nullptr) {
-  std::vector<Index> open;
-  std::vector<Box_3> open_boxes;
-  for (Index f = 0; f < faces.size(); ++f)
-    if (!certified.group[f] && !skip[f]) open.push_back(f), open_boxes.push_back(boxes[f]);
-  std::vector<Face_pair> pairs;
-  for (const auto [i, g] : bvh.overlapping_pairs_with_boxes(open_boxes, threads)) {
-    const Index f = open[i];
-    // A pair of two open faces is met twice: kept from its smaller face.
-    if (g == f || skip[g] || (!certified.group[g] && g < f)) continue;
-    if (embedded && share_embedded_star(faces[f], faces[g], *embedded)) continue;
-    pairs.push_back({std::min(f, g), std::max(f, g)});
-  }
-  for (const Face_pair& p : certified.cross_pairs)
-    if (!skip[p.first] && !skip[p.second] &&
-        !(embedded && share_embedded_star(faces[p.first], faces[p.second], *embedded)))
-      pairs.push_back(p);
-  out.candidate_pairs = pairs.size();
+                             const Certified_faces& certified, int threads, Self_intersections& out,
+                             const std::vector<unsigned char>* embedded = nullptr) {
+  // One group for all certified faces: the descent then leaves out the
+  // cross pairs too (whose boxes overlap more often than those of the open
+  // faces; the caller's list has them).
+  std::vector<std::uint16_t> closed(faces.size());
+  for (Index f = 0; f < faces.size(); ++f) closed[f] = certified.group[f] != 0;
+  find_self_intersections(k, point, faces, skip, bvh, threads, out, embedded, &closed);
   // Fixed chunks: the same hits whatever the thread count.
+  const std::vector<Face_pair>& cross = certified.cross_pairs;
   constexpr std::size_t chunk = 1024;
-  std::vector<std::vector<Self_intersection_hit>> parts((pairs.size() + chunk - 1) / chunk);
+  std::vector<std::vector<Self_intersection_hit>> parts((cross.size() + chunk - 1) / chunk);
   parallel_for_each_index(parts.size(), threads, [&](std::size_t c) {
-    for (std::size_t i = c * chunk; i < std::min(pairs.size(), (c + 1) * chunk); ++i)
-      test_face_pair(k, point, faces, pairs[i].first, pairs[i].second, parts[c]);
+    for (std::size_t i = c * chunk; i < std::min(cross.size(), (c + 1) * chunk); ++i) {
+      const auto [f, g] = cross[i];
+      if (!skip[f] && !skip[g] && !(embedded && share_embedded_star(faces[f], faces[g], *embedded)))
+        test_face_pair(k, point, faces, f, g, parts[c]);
+    }
   });
+  out.candidate_pairs += cross.size();
   std::vector<Self_intersection_hit> hits;
   for (const auto& part : parts) hits.insert(hits.end(), part.begin(), part.end());
+  if (hits.empty()) return;
+  for (const Face_pair& p : out.pairs) hits.push_back({p, true});
+  for (const Face_pair& p : out.undecided) hits.push_back({p, false});
+  out.pairs.clear(), out.undecided.clear();
   sort_hits(hits, out);
 }
 

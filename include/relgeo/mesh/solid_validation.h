@@ -285,27 +285,12 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
     *opposites_out = std::move(topology).take_opposites();
   else
     topology = Mesh_topology();
-  const Face_bvh bvh = [&] {
-    if (!certified) {
-      Face_bvh all(m, {.threads = o.threads});
-      internal::find_self_intersections(k, point, m.faces, skip, all, o.threads, si, star_flags,
-                                        stars ? &group : nullptr);
-      return all;
-    }
-    // Few faces left to test (a small operand cut into a large one): their
-    // boxes searched in the hierarchy, and the cross pairs. Many: the
-    // hierarchy's own pairs but those within one group (the traversal then
-    // costs less than searching each box).
-    if (4 * (m.faces.size() - kept) >= m.faces.size()) {
-      Face_bvh all(m, {.threads = o.threads});
-      internal::find_self_intersections(k, point, m.faces, skip, all, o.threads, si, star_flags, &group);
-      return all;
-    }
-    const std::vector<Box_3> boxes = face_boxes(m);
-    Face_bvh all(boxes, {.threads = o.threads});
-    internal::find_self_intersections(k, point, m.faces, skip, all, boxes, *certified, o.threads, si, star_flags);
-    return all;
-  }();
+  const Face_bvh bvh(m, {.threads = o.threads});
+  if (certified)
+    internal::find_self_intersections(k, point, m.faces, skip, bvh, *certified, o.threads, si, star_flags);
+  else
+    internal::find_self_intersections(k, point, m.faces, skip, bvh, o.threads, si, star_flags,
+                                      stars ? &group : nullptr);
   r.candidate_pairs = si.candidate_pairs;
   for (const Face_pair& p : si.pairs)
     internal::record(r.self_intersection_free, {Mesh_defect::self_intersection, {p.first, p.second}}, o.max_listed);

@@ -120,9 +120,11 @@ bool separated_in_projection(const K& k, const std::array<const typename K::Poin
     };
     const std::array<double, 3> na = normal(a), nb = normal(b);
     const double dot = na[0] * nb[0] + na[1] * nb[1] + na[2] * nb[2];
-    const double la = std::sqrt(na[0] * na[0] + na[1] * na[1] + na[2] * na[2]);
-    const double lb = std::sqrt(nb[0] * nb[0] + nb[1] * nb[1] + nb[2] * nb[2]);
-    if (!(std::abs(dot) >= 0.9998 * la * lb) || !(la > 0)) return false;  // (a wrong guess costs time only)
+    const double la2 = na[0] * na[0] + na[1] * na[1] + na[2] * na[2];
+    const double lb2 = nb[0] * nb[0] + nb[1] * nb[1] + nb[2] * nb[2];
+    // |cos| >= 0.9998, squared (no square roots on the path of most pairs,
+    // which are not nearly parallel); a wrong guess costs time only.
+    if (!(dot * dot >= 0.99960004 * la2 * lb2) || !(la2 > 0)) return false;
     const double ax = std::abs(na[0]), ay = std::abs(na[1]), az = std::abs(na[2]);
     const int plane = az >= ax && az >= ay ? 0 : (ax >= ay ? 1 : 2);  // xy, yz or zx (project_to_plane)
     const auto orient = k.orientation_2_object();

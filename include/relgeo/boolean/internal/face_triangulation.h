@@ -10,11 +10,12 @@
 // few per face (points arrive a handful at a time), so plain arrays and
 // linear scans beat a general-purpose structure.
 //
-// Steps: the corners' triangle; points on its edges split the triangle on
-// that side; interior points split the triangle containing them (in two when
-// on an edge); each constraint is made an edge by flipping the edges that
-// cross it (Sloan, "A fast algorithm for generating constrained Delaunay
-// triangulations", 1993), after being cut at the points lying on it; last,
+// Steps: the corners' triangle; interior points split the triangle
+// containing them (in two when on an edge), in the lexicographic order of
+// their approximations; points on its edges split the triangle on that side;
+// each constraint is made an edge by flipping the edges that cross it (Sloan,
+// "A fast algorithm for generating constrained Delaunay triangulations",
+// 1993), after being cut at the points lying on it; last,
 // Lawson's flips make the triangulation constrained Delaunay in the face's
 // plane, which removes the needles that the insertion order leaves and that
 // rounding to doubles turns over (doc/boolean.md, "Retriangulation quality").
@@ -89,9 +90,19 @@ class Face_triangulator {
     Face_triangulation out;
     if (!is_certain(sigma_) || certainly(sigma_, Certified_sign::zero))
       return fail(out, "the face is degenerate in its projection");
+    // Interior points before edge points, in order along each line: where
+    // the other mesh is (nearly) planar the curve crosses the face on a
+    // (nearly) straight line, and each interior point would otherwise be
+    // located against an edge between two points of that line (the curve's
+    // entry and exit on the face's edges, or two points inserted before it
+    // on both sides): an orientation of three nearly collinear points, which
+    // takes exact arithmetic. Locating a point beyond the points before it
+    // on its line is decided by the filters (on CAD parts against moved
+    // copies, the exact stage's calls per Boolean: rotor 706 -> 13, fandisk
+    // 858 -> 0).
+    for (int p : interior_points_in_order(f))
+      if (!insert_interior_point(p)) return fail(out, failure_);
     if (!insert_edge_points(f)) return fail(out, failure_);
-    for (Index p : f.interior_points)
-      if (!insert_interior_point(local(p))) return fail(out, failure_);
     for (const auto& s : f.segments)
       if (!insert_segment(local(s[0]), local(s[1]))) return fail(out, failure_);
     if (delaunay_) make_delaunay();
@@ -251,6 +262,22 @@ class Face_triangulator {
   }
 
   // ---- interior points ----------------------------------------------------------
+
+  // The face's interior points (local indices), sorted by their
+  // approximations in the face's frame (x, then y); in the given order when
+  // an approximation is not finite (a kernel that cannot bound its points).
+  std::vector<int> interior_points_in_order(const Face_constraints& f) {
+    std::vector<int> order;
+    order.reserve(f.interior_points.size());
+    bool finite = true;
+    for (Index g : f.interior_points) {
+      const int p = local(g);
+      order.push_back(p);
+      finite = finite && std::isfinite(plane_[p][0]) && std::isfinite(plane_[p][1]);
+    }
+    if (finite) std::sort(order.begin(), order.end(), [&](int x, int y) { return plane_[x] < plane_[y]; });
+    return order;
+  }
 
   bool insert_interior_point(int p) {
     for (std::size_t i = 0; i < tris_.size(); ++i) {

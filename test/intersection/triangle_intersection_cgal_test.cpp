@@ -3,19 +3,20 @@
 // near-degenerate, touching and coplanar families: certified kernels agree
 // whenever they decide (exact ones always decide), the intersection's points
 // are CGAL's exactly, and the naive kernel is wrong on the hard families.
-#include <gtest/gtest.h>
-
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/intersections.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <random>
 #include <sstream>
 #include <vector>
 
 #include "relgeo/analysis/triangle_pair_workloads.h"
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel.h"
+#include "relgeo/mesh/internal/face_pair_predicates.h"
 #include "support/soundness_data.h"
 
 namespace relgeo {
@@ -100,6 +101,52 @@ void expect_sound(bool never_undecided) {
 TEST(TriangleIntersectionCgal, FilteredExactAgreesWithEpeck) { expect_sound<Filtered_exact_kernel>(true); }
 TEST(TriangleIntersectionCgal, IntervalAgreesWhenItDecides) { expect_sound<Interval_kernel>(false); }
 TEST(TriangleIntersectionCgal, FailsafeAgreesWhenItDecides) { expect_sound<Failsafe_kernel<double>>(false); }
+
+// Integer corners in {0..3}^3: corners on the other triangle's plane, on
+// its edges' lines and shared coordinates abound, where the cut comparison
+// (intersection/internal/cut_overlap.h) must still be exact. The three
+// tests built on it agree with CGAL on every pair: do_intersect_triangles,
+// intersect_triangles, and the self-intersection search's pair test (two
+// faces sharing no vertex meet iff the closed triangles do).
+TEST(TriangleIntersectionCgal, GridTrianglesAgreeWithEpeck) {
+  std::mt19937 rng(30);
+  std::uniform_int_distribution<int> coordinate(0, 3);
+  const Filtered_exact_kernel k;
+  const auto n = static_cast<std::size_t>(200000 * test::test_scale()) + 1000;
+  std::size_t tested = 0, meeting = 0, corner_on_plane = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::array<Point_3<double>, 6> p;
+    std::array<Epeck::Point_3, 6> e;
+    for (int j = 0; j < 6; ++j) {
+      const int x = coordinate(rng), y = coordinate(rng), z = coordinate(rng);
+      p[j] = {double(x), double(y), double(z)};
+      e[j] = Epeck::Point_3(x, y, z);
+    }
+    const Epeck::Triangle_3 ta(e[0], e[1], e[2]), tb(e[3], e[4], e[5]);
+    if (ta.is_degenerate() || tb.is_degenerate()) continue;
+    ++tested;
+    const bool truth = CGAL::do_intersect(ta, tb);
+    meeting += truth;
+    const std::array<Point_3<double>, 3> a{p[0], p[1], p[2]}, b{p[3], p[4], p[5]};
+    const std::optional<bool> fast = do_intersect_triangles(a, b, k);
+    ASSERT_TRUE(fast.has_value()) << i;
+    ASSERT_EQ(*fast, truth) << "do_intersect_triangles, pair " << i;
+    const Kind kind = intersect_triangles(a, b, k).kind;
+    ASSERT_EQ(kind != Kind::disjoint, truth) << "intersect_triangles, pair " << i;
+    const auto o = k.orientation_3_object();
+    int on_plane = 0;
+    for (int j = 0; j < 3; ++j) on_plane += certainly(o(a[0], a[1], a[2], b[j]), Certified_sign::zero);
+    corner_on_plane += on_plane == 1 || on_plane == 2;
+    const Maybe meet = internal::triangles_meet(k, {&a[0], &a[1], &a[2]}, {&b[0], &b[1], &b[2]});
+    ASSERT_TRUE(meet.has_value()) << i;
+    ASSERT_EQ(*meet, truth) << "triangles_meet, pair " << i;
+  }
+  // Both answers occur in number, and so do the degenerate cuts (a corner of
+  // one triangle on the other's plane, the planes not equal).
+  EXPECT_GT(meeting, tested / 10);
+  EXPECT_GT(tested - meeting, tested / 10);
+  EXPECT_GT(corner_on_plane, tested / 10);
+}
 
 // The families are hard: rounded predicates get some pairs wrong.
 TEST(TriangleIntersectionCgal, TheNearFamilyIsHardForTheNaiveKernel) {

@@ -460,7 +460,7 @@ TEST(SelfIntersection, CrossingWithoutSharedVerticesAndIdenticalFaces) {
 
 TEST(SelfIntersection, ACornerOnTheOtherPlaneOutsideItIsNoContact) {
   // t touches f's plane only at (3, 3, 3), outside f; f touches t's plane
-  // along an edge. Disjoint (do_intersect_triangles answers true here).
+  // along an edge. Disjoint.
   Mesh_d m;
   m.vertices = {{0, 0, 3}, {3, 0, 1}, {2, 2, 3}, {3, 3, 3}, {3, 3, 2}, {1, 1, 0}};
   m.faces = {{0, 1, 2}, {3, 4, 5}};

@@ -32,6 +32,17 @@ inline double volume(const Mesh& m) {
   return v / 6;
 }
 
+/// Area of a mesh's faces (doubles; for tolerance checks only).
+inline double area(const Mesh& m) {
+  double s = 0;
+  for (const auto& f : m.faces) {
+    const auto &a = m.vertices[f[0]], &b = m.vertices[f[1]], &c = m.vertices[f[2]];
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    s += 0.5 * std::hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
+  }
+  return s;
+}
+
 /// The tetrahedron with corners v, outward oriented (the sign of its
 /// volume in doubles: corners whose orientation rounding cannot flip).
 inline Mesh tetrahedron(const std::array<Point_3<double>, 4>& v) {

@@ -12,7 +12,8 @@
 //
 // Steps: the corners' triangle; interior points split the triangle
 // containing them (in two when on an edge), in the lexicographic order of
-// their approximations; points on its edges split the triangle on that side;
+// their approximations; points on its edges split the triangle on that side
+// (before the interior points without the Delaunay flips: run);
 // each constraint is made an edge by flipping the edges that cross it (Sloan,
 // "A fast algorithm for generating constrained Delaunay triangulations",
 // 1993), after being cut at the points lying on it; last,
@@ -96,13 +97,18 @@ class Face_triangulator {
     // located against an edge between two points of that line (the curve's
     // entry and exit on the face's edges, or two points inserted before it
     // on both sides): an orientation of three nearly collinear points, which
-    // takes exact arithmetic. Locating a point beyond the points before it
-    // on its line is decided by the filters (on CAD parts against moved
+    // takes exact arithmetic. Located beyond the points before it on its
+    // line, a point is decided by the filters (on CAD parts against moved
     // copies, the exact stage's calls per Boolean: rotor 706 -> 13, fandisk
-    // 858 -> 0).
+    // 858 -> 0). Without the flips the insertion order is the result: edge
+    // points first, interior points as given, the triangulation of the
+    // engine before issue 28, whose needles are what
+    // Boolean_options::delaunay_retriangulation = false is kept for (tests
+    // and experiments where rounding must break a result).
+    if (!delaunay_ && !insert_edge_points(f)) return fail(out, failure_);
     for (int p : interior_points_in_order(f))
       if (!insert_interior_point(p)) return fail(out, failure_);
-    if (!insert_edge_points(f)) return fail(out, failure_);
+    if (delaunay_ && !insert_edge_points(f)) return fail(out, failure_);
     for (const auto& s : f.segments)
       if (!insert_segment(local(s[0]), local(s[1]))) return fail(out, failure_);
     if (delaunay_) make_delaunay();
@@ -264,8 +270,9 @@ class Face_triangulator {
   // ---- interior points ----------------------------------------------------------
 
   // The face's interior points (local indices), sorted by their
-  // approximations in the face's frame (x, then y); in the given order when
-  // an approximation is not finite (a kernel that cannot bound its points).
+  // approximations in the face's frame (x, then y); in the given order
+  // without the flips (run) or when an approximation is not finite (a kernel
+  // that cannot bound its points).
   std::vector<int> interior_points_in_order(const Face_constraints& f) {
     std::vector<int> order;
     order.reserve(f.interior_points.size());
@@ -275,7 +282,7 @@ class Face_triangulator {
       order.push_back(p);
       finite = finite && std::isfinite(plane_[p][0]) && std::isfinite(plane_[p][1]);
     }
-    if (finite) std::sort(order.begin(), order.end(), [&](int x, int y) { return plane_[x] < plane_[y]; });
+    if (delaunay_ && finite) std::sort(order.begin(), order.end(), [&](int x, int y) { return plane_[x] < plane_[y]; });
     return order;
   }
 

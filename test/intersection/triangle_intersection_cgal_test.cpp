@@ -137,7 +137,7 @@ TEST(TriangleIntersectionCgal, GridTrianglesAgreeWithEpeck) {
     int on_plane = 0;
     for (int j = 0; j < 3; ++j) on_plane += certainly(o(a[0], a[1], a[2], b[j]), Certified_sign::zero);
     corner_on_plane += on_plane == 1 || on_plane == 2;
-    const Maybe meet = internal::triangles_meet(k, {&a[0], &a[1], &a[2]}, {&b[0], &b[1], &b[2]});
+    const internal::Maybe meet = internal::triangles_meet(k, {&a[0], &a[1], &a[2]}, {&b[0], &b[1], &b[2]});
     ASSERT_TRUE(meet.has_value()) << i;
     ASSERT_EQ(*meet, truth) << "triangles_meet, pair " << i;
   }

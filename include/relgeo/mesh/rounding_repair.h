@@ -212,8 +212,13 @@ class Rounding_repair {
   }
   // Adds the defects of the faces `of` (sorted; in(f): f is one of them):
   // each degenerate one, and each pair of one of them and a live face that
-  // meet. Every live face's box is searched in a hierarchy of theirs, a
-  // block at a time (no box per face of the whole mesh at once).
+  // meet. The live faces a block at a time (no box per face of the whole
+  // mesh at once), each block's boxes searched in a hierarchy of theirs; when
+  // they are at least half the live faces, a hierarchy of the block against
+  // theirs by the two hierarchies' joint descent instead, which then costs
+  // less (the repairs of Booleans without validation: the gear's 17.5-19.2
+  // -> 15.7-15.9 ms; with few faces of theirs, as on the armadillo's 5.9 ms,
+  // building the blocks' hierarchies costs more than it saves).
   template <class In>
   void find_defects_of(const std::vector<Index>& of, In&& in, std::vector<Face_pair>& pairs,
                        std::vector<Index>& degenerate_faces) {
@@ -224,6 +229,8 @@ class Rounding_repair {
     }
     const Face_bvh hierarchy(of_boxes);
     const Index n = static_cast<Index>(m_.faces.size());
+    const auto live = static_cast<std::size_t>(std::count(removed_.begin(), removed_.end(), 0));
+    const bool joint_descent = 2 * of.size() >= live;
     constexpr Index block = 4096;
     std::vector<Index> faces;
     std::vector<Box_3> boxes;
@@ -231,11 +238,16 @@ class Rounding_repair {
       faces.clear(), boxes.clear();
       for (Index f = begin; f < std::min(n, begin + block); ++f)
         if (!removed_[f]) faces.push_back(f), boxes.push_back(box(f));
-      for (const auto& [j, i] : hierarchy.overlapping_pairs_with_boxes(boxes)) {
+      const auto test = [&](Index j, Index i) {
         const Index f = faces[j], g = of[i];
         // A pair of two of them is met twice: kept once.
-        if (f == g || (in(f) && f > g) || known_degenerate(f) || known_degenerate(g)) continue;
+        if (f == g || (in(f) && f > g) || known_degenerate(f) || known_degenerate(g)) return;
         if (meet(f, g)) pairs.push_back({std::min(f, g), std::max(f, g)});
+      };
+      if (joint_descent) {
+        Face_bvh(boxes).for_each_overlapping_pair(hierarchy, test);
+      } else {
+        for (const auto& [j, i] : hierarchy.overlapping_pairs_with_boxes(boxes)) test(j, i);
       }
     }
     std::sort(pairs.begin(), pairs.end());

@@ -26,9 +26,10 @@
 // answer may be wrong.
 #pragma once
 
+#include <boost/container/static_vector.hpp>
+
 #include <algorithm>
 #include <array>
-#include <boost/container/static_vector.hpp>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -251,11 +252,7 @@ class Triangle_intersector {
   // \pre every sign certain, neither triangle separated by the other's plane (run).
   void run_decided(const Triangle& a, const Triangle& b, const std::array<Certified_sign, 3>& sa,
                    const std::array<Certified_sign, 3>& sb, Result& r) {
-    const auto zero = [](const std::array<Certified_sign, 3>& s) {
-      return certainly(s[0], Certified_sign::zero) && certainly(s[1], Certified_sign::zero) &&
-             certainly(s[2], Certified_sign::zero);
-    };
-    if (zero(sa) || zero(sb)) {
+    if (all_zero(sa) || all_zero(sb)) {
       r.coplanar = true;
       coplanar(a, b, r);
       return;
@@ -632,10 +629,6 @@ class Triangle_overlap_test {
   static bool strictly_one_side(const std::array<Certified_sign, 3>& s) {
     return s[0] == s[1] && s[1] == s[2] &&
            (certainly(s[0], Certified_sign::positive) || certainly(s[0], Certified_sign::negative));
-  }
-  static bool all_zero(const std::array<Certified_sign, 3>& s) {
-    return certainly(s[0], Certified_sign::zero) && certainly(s[1], Certified_sign::zero) &&
-           certainly(s[2], Certified_sign::zero);
   }
   // Coplanar triangles: closed triangles in one plane overlap unless an edge
   // line of one strictly separates the other's vertices (the 2D separating

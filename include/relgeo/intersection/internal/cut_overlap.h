@@ -24,6 +24,13 @@
 
 namespace relgeo::internal {
 
+/// Every sign certainly zero: a triangle in the other's plane (with its
+/// other signs decided, the two are coplanar).
+inline bool all_zero(const std::array<Certified_sign, 3>& s) {
+  return certainly(s[0], Certified_sign::zero) && certainly(s[1], Certified_sign::zero) &&
+         certainly(s[2], Certified_sign::zero);
+}
+
 // Vertex i alone: strictly on the positive side with the others on the
 // plane or below, or on the plane with both others strictly below. (With
 // two vertices on the plane, the alone vertex must be the third: its two

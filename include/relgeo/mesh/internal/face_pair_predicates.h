@@ -167,14 +167,10 @@ Maybe triangles_meet(const K& k, const std::array<const typename K::Point_3*, 3>
   const auto decided = [](const std::array<Certified_sign, 3>& s) {
     return is_certain(s[0]) && is_certain(s[1]) && is_certain(s[2]);
   };
-  const auto in_plane = [](const std::array<Certified_sign, 3>& s) {
-    return certainly(s[0], Certified_sign::zero) && certainly(s[1], Certified_sign::zero) &&
-           certainly(s[2], Certified_sign::zero);
-  };
   // Planes that cross: two orientations compare the triangles' cuts along
   // their common line (on a gear's Boolean, 25,307 of 217,441 pairs got
   // here, each up to six segment tests of three orientations before).
-  if (decided(sa) && decided(sb) && !in_plane(sa)) {
+  if (decided(sa) && decided(sb) && !all_zero(sa)) {
     const auto through = [&orient](const auto* p, const auto* q, const auto* r, const auto* s) {
       return orient(*p, *q, *r, *s);
     };

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <numbers>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "mesh/mesh_fixtures.h"
@@ -149,6 +150,50 @@ TEST(EmbeddedStars, CheckSolidFindsThePairwiseTestsPairs) {
     EXPECT_EQ(reported, pairwise) << "trial " << trial;
   }
   EXPECT_GT(crossing_at_apex, 0);  // the hard case occurred
+}
+
+// star_embedded (the certificate from one vertex's star, without the
+// mesh's topology: the rounding repair's) agrees with embedded_star_flags
+// on every vertex: of smooth solids, of suspensions whose apex winds twice,
+// of a sphere with a hole (boundary vertices: the star's link is a path),
+// and of tori with noisy vertices (stars with folded faces).
+TEST(EmbeddedStars, TheOneVertexTestAgreesWithTheWholeMeshes) {
+  std::vector<Mesh_d> meshes{icosphere(3), torus(12, 8)};
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> height(-4, 4);
+  for (int trial = 0; trial < 40; ++trial) {
+    std::array<double, 5> z;
+    for (double& x : z) x = 0.25 * height(rng);
+    meshes.push_back(pentagram_suspension(z));
+  }
+  Mesh_d holed = icosphere(2);
+  holed.faces.erase(holed.faces.begin() + 7);
+  meshes.push_back(holed);
+  std::normal_distribution<double> noise(0, 0.02);
+  for (int trial = 0; trial < 4; ++trial) {
+    Mesh_d noisy = torus(24, 16);
+    for (auto& p : noisy.vertices) p.x += noise(rng), p.y += noise(rng), p.z += noise(rng);
+    meshes.push_back(noisy);
+  }
+  long certified = 0, refused = 0;
+  for (const Mesh_d& m : meshes) {
+    const Filtered_exact_kernel k;
+    const auto flags = embedded_stars(m);
+    std::vector<std::vector<Index>> star(m.vertices.size());
+    for (Index f = 0; f < m.faces.size(); ++f)
+      for (Index v : m.faces[f]) star[v].push_back(f);
+    const auto every_plane = internal::projected_orientations(k, m.vertices, m.faces);
+    const auto projected = [&](Index f) { return every_plane[f]; };
+    for (Index v = 0; v < m.vertices.size(); ++v) {
+      const bool one = internal::star_embedded(k, m.vertices, m.faces, v, std::span<const Index>(star[v]), projected);
+      EXPECT_EQ(one, flags[v] != 0) << "vertex " << v;
+      (one ? certified : refused) += 1;
+    }
+  }
+  // Both answers occurred: among the refused, the suspensions' apices, the
+  // hole's rim and the folds of the noisy tori.
+  EXPECT_GT(certified, 1000);
+  EXPECT_GT(refused, 40);
 }
 
 // ---- the projected-patch certificate (mesh/internal/projected_patches.h) ---

@@ -30,6 +30,8 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
@@ -83,6 +85,43 @@ std::vector<std::array<Certified_sign, 3>> projected_orientations(
   return s;
 }
 
+/// The planes in which a face projects with a strict orientation: bit p
+/// for positive in plane p, bit 3 + p for negative (0 for a face left out).
+inline unsigned char strict_sign_bits(const std::array<Certified_sign, 3>& projected) {
+  unsigned char bits = 0;
+  for (int plane = 0; plane < 3; ++plane) {
+    if (certainly(projected[plane], Certified_sign::positive)) bits |= static_cast<unsigned char>(1u << plane);
+    if (certainly(projected[plane], Certified_sign::negative)) bits |= static_cast<unsigned char>(8u << plane);
+  }
+  return bits;
+}
+
+/// Sunday's crossing rule (file comment) for the link edge (a, b) of v in
+/// `plane` (0-2) of a star whose faces all project counterclockwise
+/// (`left`: v' is left of every link edge) or all clockwise: whether the
+/// edge counts as a crossing of the ray from v'; empty when a comparison
+/// is uncertain.
+template <class K>
+std::optional<bool> link_edge_crosses(const K& k, const typename K::Point_3& v, const typename K::Point_3& a,
+                                      const typename K::Point_3& b, int plane, bool left) {
+  using A = Point_access<typename K::Point_3>;
+  using P2 = typename K::Point_2;
+  const auto compare = k.compare_xy_2_object();
+  // The sign of u's second coordinate in `plane` minus v's (P2{w, w}
+  // compares w alone through the kernel's lexicographic comparison).
+  const auto compare_second = [&](const typename K::Point_3& u) {
+    switch (plane) {
+      case 0: return compare(P2{A::y(u), A::y(u)}, P2{A::y(v), A::y(v)});
+      case 1: return compare(P2{A::z(u), A::z(u)}, P2{A::z(v), A::z(v)});
+      default: return compare(P2{A::x(u), A::x(u)}, P2{A::x(v), A::x(v)});
+    }
+  };
+  const Certified_sign ca = compare_second(a), cb = compare_second(b);
+  if (!is_certain(ca) || !is_certain(cb)) return std::nullopt;
+  const bool a_above = certainly(ca, Certified_sign::positive), b_above = certainly(cb, Certified_sign::positive);
+  return left ? (!a_above && b_above) : (a_above && !b_above);
+}
+
 /// For each vertex, 1 when its star is certified embedded by a projection
 /// (file comment), 0 otherwise; `projected` computed on every plane. `skip`:
 /// faces left out of the test (degenerate or undecided); a vertex of one is
@@ -96,18 +135,6 @@ std::vector<unsigned char> embedded_star_flags(const K& k, const Points& point, 
                                                const std::vector<std::array<Certified_sign, 3>>& projected,
                                                const std::vector<unsigned char>& skip, const Mesh_topology& t,
                                                const std::vector<std::uint16_t>* patch = nullptr) {
-  using A = Point_access<typename K::Point_3>;
-  using P2 = typename K::Point_2;
-  const auto compare = k.compare_xy_2_object();
-  // The sign of u's second coordinate in `plane` minus v's (P2{w, w}
-  // compares w alone through the kernel's lexicographic comparison).
-  const auto compare_second = [&](const typename K::Point_3& u, const typename K::Point_3& v, int plane) {
-    switch (plane) {
-      case 0: return compare(P2{A::y(u), A::y(u)}, P2{A::y(v), A::y(v)});
-      case 1: return compare(P2{A::z(u), A::z(u)}, P2{A::z(v), A::z(v)});
-      default: return compare(P2{A::x(u), A::x(u)}, P2{A::x(v), A::x(v)});
-    }
-  };
   const std::size_t nv = t.number_of_vertices();
   // Per vertex: the planes in which every face around it projects with
   // positive (bits 0-2) or negative (bits 3-5) orientation.
@@ -117,12 +144,7 @@ std::vector<unsigned char> embedded_star_flags(const K& k, const Points& point, 
   constexpr std::uint32_t unset = 0xFFFFFFFFu;
   std::vector<std::uint32_t> one_patch(patch ? nv : 0, unset);
   for (std::size_t f = 0; f < faces.size(); ++f) {
-    unsigned char bits = 0;
-    if (!skip[f])
-      for (int plane = 0; plane < 3; ++plane) {
-        if (certainly(projected[f][plane], Certified_sign::positive)) bits |= static_cast<unsigned char>(1u << plane);
-        if (certainly(projected[f][plane], Certified_sign::negative)) bits |= static_cast<unsigned char>(8u << plane);
-      }
+    const unsigned char bits = skip[f] ? 0 : strict_sign_bits(projected[f]);
     for (Index v : faces[f]) {
       same[v] &= bits;
       if (patch) one_patch[v] = one_patch[v] == unset || one_patch[v] == (*patch)[f] ? (*patch)[f] : 0;
@@ -144,23 +166,65 @@ std::vector<unsigned char> embedded_star_flags(const K& k, const Points& point, 
     for (int i = 0; i < 3; ++i) {
       const Index v = tri[i];
       if (plane_of[v] < 0) continue;
-      const int plane = plane_of[v] % 3;
-      const bool left = plane_of[v] < 3;
-      const Certified_sign ca = compare_second(point[tri[(i + 1) % 3]], point[v], plane);
-      const Certified_sign cb = compare_second(point[tri[(i + 2) % 3]], point[v], plane);
-      if (!is_certain(ca) || !is_certain(cb)) {
+      const std::optional<bool> crosses = link_edge_crosses(k, point[v], point[tri[(i + 1) % 3]],
+                                                            point[tri[(i + 2) % 3]], plane_of[v] % 3, plane_of[v] < 3);
+      if (!crosses) {
         plane_of[v] = -1;
         continue;
       }
-      const bool a_above = certainly(ca, Certified_sign::positive), b_above = certainly(cb, Certified_sign::positive);
-      if (left ? (!a_above && b_above) : (a_above && !b_above))
-        crossings[v] = static_cast<unsigned char>(std::min(crossings[v] + 1, 2));
+      if (*crosses) crossings[v] = static_cast<unsigned char>(std::min(crossings[v] + 1, 2));
     }
   }
   // Winding number 1 (or -1 for a clockwise projection).
   std::vector<unsigned char> embedded(nv, 0);
   for (Index v = 0; v < nv; ++v) embedded[v] = plane_of[v] >= 0 && crossings[v] == 1;
   return embedded;
+}
+
+/// The same certificate for one vertex v from its star alone, for a mesh
+/// whose topology is not built (the rounding repair's): `star` lists every
+/// face around v, `projected(f)` gives a face's orientations in the three
+/// planes. The faces must form one closed fan: the link edges (a, b) of
+/// the faces (v, a, b) make one cycle through all of them, each link vertex
+/// starting one edge and ending one. That is what an interior vertex of a
+/// consistently oriented 2-manifold has, whatever the mesh is elsewhere,
+/// and all the file comment's argument uses.
+template <class K, class Points, class Projected>
+bool star_embedded(const K& k, const Points& point, const std::vector<Triangle>& faces, Index v,
+                   std::span<const Index> star, Projected&& projected) {
+  constexpr std::size_t most = 64;  // a longer star is left to the pair tests
+  const std::size_t n = star.size();
+  if (n < 3 || n > most) return false;
+  std::array<Index, most> from, to;
+  unsigned char same = 63;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Triangle& t = faces[star[i]];
+    const int at = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+    from[i] = t[(at + 1) % 3], to[i] = t[(at + 2) % 3];
+    if (from[i] == v || to[i] == v) return false;  // a repeated vertex
+    same &= strict_sign_bits(projected(star[i]));
+  }
+  if (!same) return false;
+  // One cycle: from each edge to the only one starting where it ends (so
+  // no link vertex starts two edges), back to the first after all of them.
+  std::size_t at = 0, steps = 0;
+  do {
+    std::size_t next = n, starting = 0;
+    for (std::size_t j = 0; j < n; ++j)
+      if (from[j] == to[at]) next = j, ++starting;
+    if (starting != 1) return false;
+    at = next, ++steps;
+  } while (at != 0 && steps < n);
+  if (at != 0 || steps != n) return false;
+  const int plane_bit = std::countr_zero(static_cast<unsigned>(same));
+  int crossings = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::optional<bool> crosses =
+        link_edge_crosses(k, point[v], point[from[i]], point[to[i]], plane_bit % 3, plane_bit < 3);
+    if (!crosses) return false;
+    crossings += *crosses;
+  }
+  return crossings == 1;
 }
 
 /// Whether faces f and g share a vertex whose star is certified embedded

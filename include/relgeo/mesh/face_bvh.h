@@ -90,16 +90,20 @@ struct Box_3 {
 namespace detail {
 /// Whether two closed boxes with members lo[3], hi[3] share a point, for any
 /// mix of coordinate types (the hierarchy's float nodes, double face boxes).
-/// Non-short-circuit: six comparisons and no unpredictable branch.
+/// Non-short-circuit: six comparisons and no unpredictable branch. Always
+/// inlined: a call per box in the searches' innermost loops cost the
+/// rounding repair's box queries a third of their time where GCC chose one.
 template <class BoxA, class BoxB>
-bool closed_boxes_overlap(const BoxA& a, const BoxB& b) {
+[[gnu::always_inline]] inline bool closed_boxes_overlap(const BoxA& a, const BoxB& b) {
   return bool(int(a.lo[0] <= b.hi[0]) & int(b.lo[0] <= a.hi[0]) & int(a.lo[1] <= b.hi[1]) &
               int(b.lo[1] <= a.hi[1]) & int(a.lo[2] <= b.hi[2]) & int(b.lo[2] <= a.hi[2]));
 }
 }  // namespace detail
 
 /// Whether two closed boxes share a point (touching counts).
-inline bool do_overlap(const Box_3& a, const Box_3& b) { return detail::closed_boxes_overlap(a, b); }
+[[gnu::always_inline]] inline bool do_overlap(const Box_3& a, const Box_3& b) {
+  return detail::closed_boxes_overlap(a, b);
+}
 
 /// \brief The box of every face: the smallest box of doubles containing its
 /// three corners (lower_double / upper_double of each coordinate, so exact

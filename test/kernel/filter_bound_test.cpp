@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <vector>
 
 #include "relgeo/analysis/predicate_workloads.h"
 #include "relgeo/analysis/sign_tally.h"
@@ -159,6 +160,48 @@ TEST(FilterBound, FilteredKernelUsesEveryStage) {
       K::orientation_2_with_stage({small * 0.5, small * 0.5}, {small * 12, small * 12}, {small * 24, small * 24});
   EXPECT_EQ(small_zero.second, Filter_stage::interval);  // exact differences and products: a zero interval
   EXPECT_EQ(small_zero.first, Certified_sign::zero);
+}
+
+// One plane (p, q, r) against several points: Orientation_3_plane_epsilon_test
+// decides only exact signs, in every environment, and Filtered_exact_kernel's
+// Orientation_3_against_plane answers every finite case exactly. The
+// points: each workload case's s, and points on the plane far beyond the
+// triangle, rounded to doubles (nearly coplanar; there |s - p| dominates the
+// filter's bound, which a bound of q - p and r - p alone would get wrong).
+TEST(FilterBound, OnePlaneAgainstSeveralPointsIsExact) {
+  using K = Filtered_exact_kernel;
+  std::vector<std::array<double, 12>> cases;
+  for (const auto& w : analysis::standard_workloads_3(3000, 37))
+    for (const auto& c : w.cases) cases.push_back(c.c);
+  std::vector<test::Fp_environment_setting> settings = test::non_default_fp_environments();
+  settings.insert(settings.begin(), test::Fp_environment_setting{.name = "default"});
+  std::size_t decided = 0, left = 0;
+  for (const auto& v : cases) {
+    const K::Point_3 p{v[0], v[1], v[2]}, q{v[3], v[4], v[5]}, r{v[6], v[7], v[8]};
+    std::vector<K::Point_3> points{{v[9], v[10], v[11]}};
+    for (double t : {1e3, -3e4, 7e5})
+      points.push_back({p.x + t * (q.x - p.x) - 0.7 * t * (r.x - p.x), p.y + t * (q.y - p.y) - 0.7 * t * (r.y - p.y),
+                        p.z + t * (q.z - p.z) - 0.7 * t * (r.z - p.z)});
+    for (const K::Point_3& s : points) {
+      if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z)) continue;  // a far point overflowed
+      const mpq_class d = internal::orientation_3_determinant<mpq_class>(
+          exact(p.x), exact(p.y), exact(p.z), exact(q.x), exact(q.y), exact(q.z), exact(r.x), exact(r.y), exact(r.z),
+          exact(s.x), exact(s.y), exact(s.z));
+      const Certified_sign truth = sgn(d) > 0   ? Certified_sign::positive
+                                   : sgn(d) < 0 ? Certified_sign::negative
+                                                : Certified_sign::zero;
+      for (const test::Fp_environment_setting& setting : settings) {
+        const test::Scoped_fp_environment environment(setting);
+        const internal::Orientation_3_plane_epsilon_test<double> plane(p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z);
+        const internal::Epsilon_test t = plane(s.x, s.y, s.z);
+        if (t.decided) ASSERT_EQ(t.sign, truth) << setting.name;
+        (t.decided ? decided : left) += 1;
+        ASSERT_EQ(K::Orientation_3_against_plane(p, q, r)(s), truth) << setting.name;
+      }
+    }
+  }
+  EXPECT_GT(decided, 10000u);
+  EXPECT_GT(left, 10000u);  // the later stages answered too
 }
 
 TEST(FilterBound, FilteredOrientation3UsesGmpOnlyOutsideTheExpansionRange) {

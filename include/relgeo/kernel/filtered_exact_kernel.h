@@ -103,6 +103,24 @@ class Filtered_exact_kernel : public internal::Kernel_base<Filtered_exact_kernel
       return after_semi_static_3(p, q, r, s).first;
     }
   };
+  /// Orientation_3 of several points s against one plane (p, q, r): the
+  /// filter's minors of (p, q, r) computed once, the same answers (a
+  /// triangle's three corners against another's plane).
+  class Orientation_3_against_plane {
+   public:
+    Orientation_3_against_plane(const Point_3& p, const Point_3& q, const Point_3& r)
+        : p_(p), q_(q), r_(r), test_(p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z) {}
+    Certified_sign operator()(const Point_3& s) const {
+      const internal::Epsilon_test t = test_(s.x, s.y, s.z);
+      if (t.decided) [[likely]]
+        return t.sign;
+      return after_semi_static_3(p_, q_, r_, s).first;
+    }
+
+   private:
+    Point_3 p_, q_, r_;
+    internal::Orientation_3_plane_epsilon_test<double> test_;
+  };
   Orientation_2 orientation_2_object() const { return {}; }
   Orientation_3 orientation_3_object() const { return {}; }
  private:

@@ -123,18 +123,38 @@ inline Epsilon_test orientation_2_epsilon_test(T px, T py, T qx, T qy, T rx, T r
   return epsilon_test(det, C::eps_2 * mx * my, (lo >= C::low_2) & (hi <= C::high_2));
 }
 
+/// The epsilon test of orientation_3(p, q, r, s) in T for several points s
+/// against one plane (p, q, r): what does not depend on s (the minors, the
+/// maxima of q - p and r - p) computed once; the same operations as for one
+/// s, so the same answers.
+template <class T>
+class Orientation_3_plane_epsilon_test {
+ public:
+  Orientation_3_plane_epsilon_test(T px, T py, T pz, T qx, T qy, T qz, T rx, T ry, T rz)
+      : minors_(px, py, pz, qx, qy, qz, rx, ry, rz),
+        mx_(std::max(std::abs(qx - px), std::abs(rx - px))),
+        my_(std::max(std::abs(qy - py), std::abs(ry - py))),
+        mz_(std::max(std::abs(qz - pz), std::abs(rz - pz))) {}
+  Epsilon_test operator()(T sx, T sy, T sz) const {
+    using C = Orientation_filter_constants<T>;
+    const T det = minors_.determinant(sx, sy, sz);
+    const T mx = std::max(mx_, std::abs(sx - minors_.px));
+    const T my = std::max(my_, std::abs(sy - minors_.py));
+    const T mz = std::max(mz_, std::abs(sz - minors_.pz));
+    const T lo = std::min({mx, my, mz}), hi = std::max({mx, my, mz});
+    return epsilon_test(det, C::eps_3 * mx * my * mz, (lo >= C::low_3) & (hi <= C::high_3));
+  }
+
+ private:
+  Orientation_3_minors<T> minors_;
+  T mx_, my_, mz_;
+};
+
 /// The epsilon test of orientation_3 in T.
 template <class T>
 inline Epsilon_test orientation_3_epsilon_test(T px, T py, T pz, T qx, T qy, T qz, T rx, T ry,
                                                T rz, T sx, T sy, T sz) {
-  using C = Orientation_filter_constants<T>;
-  const T det =
-      orientation_3_determinant<T>(px, py, pz, qx, qy, qz, rx, ry, rz, sx, sy, sz);
-  const T mx = std::max({std::abs(qx - px), std::abs(rx - px), std::abs(sx - px)});
-  const T my = std::max({std::abs(qy - py), std::abs(ry - py), std::abs(sy - py)});
-  const T mz = std::max({std::abs(qz - pz), std::abs(rz - pz), std::abs(sz - pz)});
-  const T lo = std::min({mx, my, mz}), hi = std::max({mx, my, mz});
-  return epsilon_test(det, C::eps_3 * mx * my * mz, (lo >= C::low_3) & (hi <= C::high_3));
+  return Orientation_3_plane_epsilon_test<T>(px, py, pz, qx, qy, qz, rx, ry, rz)(sx, sy, sz);
 }
 
 /// Epsilon-tested sign of orientation_2 in T; `uncertain` when the test cannot

@@ -41,6 +41,7 @@
 #include "relgeo/intersection/internal/cut_overlap.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/implicit_point.h"
+#include "relgeo/kernel/internal/orientation_against.h"
 #include "relgeo/kernel/point_access.h"
 #include "relgeo/kernel/vector_3.h"
 
@@ -140,12 +141,14 @@ class Triangle_intersector {
       // A triangle strictly on one side of the other's plane: disjoint,
       // whatever the other signs are (decided or not). Tested for a first:
       // most pairs of a broad phase end after its three orientations.
-      for (int i = 0; i < 3; ++i) sa[i] = orient3_(b[0], b[1], b[2], a[i]);
+      const auto against_b = internal::orientation_against(k_, b[0], b[1], b[2]);
+      for (int i = 0; i < 3; ++i) sa[i] = against_b(a[i]);
       if (separated(sa)) {
         r.kind = Triangle_intersection_kind::disjoint;
         return r;
       }
-      for (int i = 0; i < 3; ++i) sb[i] = orient3_(a[0], a[1], a[2], b[i]);
+      const auto against_a = internal::orientation_against(k_, a[0], a[1], a[2]);
+      for (int i = 0; i < 3; ++i) sb[i] = against_a(b[i]);
       if (separated(sb)) {
         r.kind = Triangle_intersection_kind::disjoint;
         return r;
@@ -613,11 +616,11 @@ class Triangle_overlap_test {
   explicit Triangle_overlap_test(const K& k) : orient3_(k.orientation_3_object()), k_(k) {}
 
   std::optional<bool> run(Triangle a, Triangle b) const {
-    std::array<Certified_sign, 3> sb{orient3_(a[0], a[1], a[2], b[0]), orient3_(a[0], a[1], a[2], b[1]),
-                                     orient3_(a[0], a[1], a[2], b[2])};
+    const auto against_a = internal::orientation_against(k_, a[0], a[1], a[2]);
+    const std::array<Certified_sign, 3> sb{against_a(b[0]), against_a(b[1]), against_a(b[2])};
     if (strictly_one_side(sb)) return false;
-    std::array<Certified_sign, 3> sa{orient3_(b[0], b[1], b[2], a[0]), orient3_(b[0], b[1], b[2], a[1]),
-                                     orient3_(b[0], b[1], b[2], a[2])};
+    const auto against_b = internal::orientation_against(k_, b[0], b[1], b[2]);
+    const std::array<Certified_sign, 3> sa{against_b(a[0]), against_b(a[1]), against_b(a[2])};
     if (strictly_one_side(sa)) return false;
     for (int i = 0; i < 3; ++i)
       if (!is_certain(sa[i]) || !is_certain(sb[i])) return std::nullopt;

@@ -32,6 +32,7 @@
 
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/intersection/internal/cut_overlap.h"
+#include "relgeo/kernel/internal/orientation_against.h"
 #include "relgeo/mesh/internal/embedded_stars.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
@@ -160,9 +161,11 @@ Maybe triangles_meet(const K& k, const std::array<const typename K::Point_3*, 3>
            (certainly(s[0], Certified_sign::positive) || certainly(s[0], Certified_sign::negative));
   };
   std::array<Certified_sign, 3> sb, sa;
-  for (int i = 0; i < 3; ++i) sb[i] = orient(*a[0], *a[1], *a[2], *b[i]);
+  const auto against_a = orientation_against(k, *a[0], *a[1], *a[2]);
+  for (int i = 0; i < 3; ++i) sb[i] = against_a(*b[i]);
   if (one_side(sb)) return false;
-  for (int i = 0; i < 3; ++i) sa[i] = orient(*b[0], *b[1], *b[2], *a[i]);
+  const auto against_b = orientation_against(k, *b[0], *b[1], *b[2]);
+  for (int i = 0; i < 3; ++i) sa[i] = against_b(*a[i]);
   if (one_side(sa)) return false;
   const auto decided = [](const std::array<Certified_sign, 3>& s) {
     return is_certain(s[0]) && is_certain(s[1]) && is_certain(s[2]);
@@ -251,7 +254,6 @@ Maybe faces_meet_beyond_shared(const K& k, const Points& point, const Triangle& 
       // The opposite corners of each face against the other's plane: when
       // those of one face lie strictly on one side, it meets the other's
       // plane in v only (decides most neighbours with two orientations).
-      const auto orient = k.orientation_3_object();
       const int i = fi[0], j = gi[0];
       const auto& f0 = point[f[0]];
       const auto& f1 = point[f[1]];
@@ -264,9 +266,11 @@ Maybe faces_meet_beyond_shared(const K& k, const Points& point, const Triangle& 
       const auto& b1 = point[g[(j + 1) % 3]];
       const auto& b2 = point[g[(j + 2) % 3]];
       if (separated_around_vertex(k, point[f[i]], a1, a2, b1, b2)) return false;
-      const Certified_sign sb1 = orient(f0, f1, f2, b1), sb2 = orient(f0, f1, f2, b2);
+      const auto against_f = orientation_against(k, f0, f1, f2);
+      const Certified_sign sb1 = against_f(b1), sb2 = against_f(b2);
       if (strictly_signed(sb1) && sb1 == sb2) return false;
-      const Certified_sign sa1 = orient(g0, g1, g2, a1), sa2 = orient(g0, g1, g2, a2);
+      const auto against_g = orientation_against(k, g0, g1, g2);
+      const Certified_sign sa1 = against_g(a1), sa2 = against_g(a2);
       if (strictly_signed(sa1) && sa1 == sa2) return false;
       return maybe_or(segment_meets_triangle(k, a1, a2, g0, g1, g2, sa1, sa2),
                       segment_meets_triangle(k, b1, b2, f0, f1, f2, sb1, sb2));

@@ -194,7 +194,9 @@ TEST(FilterBound, OnePlaneAgainstSeveralPointsIsExact) {
         const test::Scoped_fp_environment environment(setting);
         const internal::Orientation_3_plane_epsilon_test<double> plane(p.x, p.y, p.z, q.x, q.y, q.z, r.x, r.y, r.z);
         const internal::Epsilon_test t = plane(s.x, s.y, s.z);
-        if (t.decided) ASSERT_EQ(t.sign, truth) << setting.name;
+        if (t.decided) {
+          ASSERT_EQ(t.sign, truth) << setting.name;
+        }
         (t.decided ? decided : left) += 1;
         ASSERT_EQ(K::Orientation_3_against_plane(p, q, r)(s), truth) << setting.name;
       }

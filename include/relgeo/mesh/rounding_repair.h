@@ -280,10 +280,11 @@ class Rounding_repair {
   }
   // The same from one hierarchy of the live faces, whose descent stops at
   // pairs of nodes holding none of the faces to test: faster when they are
-  // at least a quarter of the live faces (the first detection on a gear's
-  // union, three faces in four: 17.4 -> 15.7 ms; a rotor's, one in three:
-  // 7.0 -> 6.7), slower with fewer (the armadillo's), where the blocks'
-  // searches cost less.
+  // at least a quarter of the live faces (the first detection, a probe: on
+  // a gear's union, three faces in four, 17.4 ms with the blocks' joint
+  // descent against 15.2; on a rotor's, one in three, 6.9 ms with the box
+  // queries against 6.2), slower with fewer (the fandisk's, one in six: 4.7
+  // against 5.6 ms; the armadillo's: 6.2 against 10.8).
   template <class In>
   void defects_by_descent(In&& in, std::vector<Face_pair>& pairs, const std::vector<unsigned char>* embedded) {
     std::vector<Index> faces;

@@ -162,12 +162,8 @@ class Rounding_repair {
   bool degenerate(Index f) const {
     const Triangle& t = m_.faces[f];
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
-    const auto orient = k_.orientation_2_object();
-    const auto& p = m_.vertices;
     for (int plane = 0; plane < 3; ++plane)
-      if (!certainly(orient(project_to_plane<K>(p[t[0]], plane), project_to_plane<K>(p[t[1]], plane),
-                            project_to_plane<K>(p[t[2]], plane)),
-                     Certified_sign::zero))
+      if (!certainly(projected_orientation(k_, m_.vertices, t, plane), Certified_sign::zero))
         return false;  // the filtered exact kernel decides every sign
     return true;
   }
@@ -205,16 +201,12 @@ class Rounding_repair {
   // union it leaves 2,950 of 24,620 pairs to test). From the stars as they
   // are before any repair.
   std::vector<unsigned char> embedded_stars_of(const std::vector<Index>& faces) const {
-    const auto orient = k_.orientation_2_object();
     std::vector<std::array<Certified_sign, 3>> projected(m_.faces.size());
     std::vector<char> known(m_.faces.size(), 0);
     const auto projected_of = [&](Index f) -> const std::array<Certified_sign, 3>& {
       if (!known[f]) {
-        const Triangle& t = m_.faces[f];
-        const auto& p = m_.vertices;
         for (int plane = 0; plane < 3; ++plane)
-          projected[f][plane] = orient(project_to_plane<K>(p[t[0]], plane), project_to_plane<K>(p[t[1]], plane),
-                                       project_to_plane<K>(p[t[2]], plane));
+          projected[f][plane] = projected_orientation(k_, m_.vertices, m_.faces[f], plane);
         known[f] = 1;
       }
       return projected[f];

@@ -55,6 +55,13 @@ typename K::Point_2 project_to_plane(const typename K::Point_3& p, int plane) {
   }
 }
 
+/// The orientation of face t projected to coordinate plane `plane`.
+template <class K, class Points>
+Certified_sign projected_orientation(const K& k, const Points& point, const Triangle& t, int plane) {
+  return k.orientation_2_object()(project_to_plane<K>(point[t[0]], plane), project_to_plane<K>(point[t[1]], plane),
+                                  project_to_plane<K>(point[t[2]], plane));
+}
+
 /// The orientation of every face projected to each coordinate plane.
 /// Faces with a repeated vertex get `zero` in all three. Without
 /// `every_plane` a face's planes after its first strict sign are left
@@ -65,7 +72,6 @@ template <class K, class Points>
 std::vector<std::array<Certified_sign, 3>> projected_orientations(
     const K& k, const Points& point, const std::vector<Triangle>& faces, bool every_plane = true,
     const std::vector<unsigned char>* every_plane_of = nullptr) {
-  const auto orient = k.orientation_2_object();
   std::vector<std::array<Certified_sign, 3>> s(faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const Triangle& t = faces[f];
@@ -75,8 +81,7 @@ std::vector<std::array<Certified_sign, 3>> projected_orientations(
     }
     s[f].fill(Certified_sign::uncertain);
     for (int plane = 0; plane < 3; ++plane) {
-      s[f][plane] = orient(project_to_plane<K>(point[t[0]], plane), project_to_plane<K>(point[t[1]], plane),
-                           project_to_plane<K>(point[t[2]], plane));
+      s[f][plane] = projected_orientation(k, point, t, plane);
       if (!(every_plane && (!every_plane_of || (*every_plane_of)[f])) &&
           (certainly(s[f][plane], Certified_sign::positive) || certainly(s[f][plane], Certified_sign::negative)))
         break;

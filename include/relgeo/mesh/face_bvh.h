@@ -57,6 +57,7 @@
 
 #include "relgeo/core/errors.h"
 #include "relgeo/core/fp_environment.h"
+#include "relgeo/core/internal/radix_sort.h"
 #include "relgeo/core/interval.h"
 #include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/point.h"
@@ -555,7 +556,7 @@ class Face_bvh {
       scale[k] = hi[k] > lo[k] ? 1023.0 / (hi[k] - lo[k]) : 0.0;
       if (!std::isfinite(scale[k])) scale[k] = 0.0;
     }
-    std::vector<std::uint64_t> keys(n), tmp(n);
+    std::vector<std::uint64_t> keys(n), tmp;
     for (std::size_t f = 0; f < n; ++f) {
       std::uint32_t code = 0;
       for (int k = 0; k < 3; ++k) {
@@ -568,13 +569,7 @@ class Face_bvh {
       }
       keys[f] = (std::uint64_t{code} << 32) | f;
     }
-    for (int shift = 32; shift < 62; shift += 10) {  // three 10-bit digits of the 30-bit code
-      std::array<std::uint32_t, 1025> start{};
-      for (std::uint64_t key : keys) ++start[((key >> shift) & 1023) + 1];
-      for (std::size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
-      for (std::uint64_t key : keys) tmp[start[(key >> shift) & 1023]++] = key;
-      keys.swap(tmp);
-    }
+    internal::radix_sort_bits(keys, tmp, 32, 30, 10);  // three 10-bit digits of the 30-bit code
     std::vector<std::uint32_t> codes(n);
     for (std::size_t i = 0; i < n; ++i) {
       codes[i] = static_cast<std::uint32_t>(keys[i] >> 32);

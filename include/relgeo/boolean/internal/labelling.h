@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "relgeo/core/certified_sign.h"
+#include "relgeo/core/internal/radix_sort.h"
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::internal {
@@ -83,7 +85,7 @@ class Piece_adjacency {
     }
     // Sorted by undirected edge, the two half-edges of an edge are
     // neighbours: one pass pairs them (no search per half-edge).
-    std::sort(matched_.begin(), matched_.end());
+    sort_matched();
     for (std::size_t j = 0; j < matched_.size();) {
       std::size_t e = j + 1;
       while (e < matched_.size() && matched_[e].first == matched_[j].first) ++e;
@@ -111,6 +113,30 @@ class Piece_adjacency {
  private:
   static std::uint64_t edge_key(Index u, Index w) {
     return (std::uint64_t{std::min(u, w)} << 32) | std::max(u, w);
+  }
+  // matched_ sorted as std::sort would: by edge, then half-edge. When an
+  // edge's two ends and the half-edge fit in one word, by radix sort
+  // (radix_sort_bits; a stable sort of the half-edges, listed in increasing
+  // order): on the elephant's union, most of the sort's 0.4 ms went.
+  void sort_matched() {
+    std::uint64_t largest = 0;
+    for (const auto& [key, half] : matched_) largest = std::max({largest, key >> 32, key & 0xFFFFFFFFu});
+    const int end_bits = static_cast<int>(std::bit_width(largest));
+    const int tag_bits = matched_.empty() ? 0 : static_cast<int>(std::bit_width(matched_.back().second));
+    if (2 * end_bits + tag_bits > 64) {
+      std::sort(matched_.begin(), matched_.end());
+      return;
+    }
+    std::vector<std::uint64_t> word, scratch;
+    word.reserve(matched_.size());
+    for (const auto& [key, half] : matched_)
+      word.push_back(((key >> 32) << end_bits | (key & 0xFFFFFFFFu)) << tag_bits | half);
+    internal::radix_sort_bits(word, scratch, tag_bits, 2 * end_bits);
+    const std::uint64_t tag_mask = (std::uint64_t{1} << tag_bits) - 1, end_mask = (std::uint64_t{1} << end_bits) - 1;
+    for (std::size_t i = 0; i < word.size(); ++i) {
+      const std::uint64_t key = word[i] >> tag_bits;
+      matched_[i] = {(key >> end_bits) << 32 | (key & end_mask), word[i] & tag_mask};
+    }
   }
   std::vector<Index> opposite_;
   // Half-edges not matched through the operand: (undirected edge, half-edge

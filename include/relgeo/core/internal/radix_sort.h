@@ -4,7 +4,6 @@
 // sort this way in O(n).
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -21,14 +20,16 @@ inline void radix_sort_bits(std::vector<std::uint64_t>& words, std::vector<std::
   const int passes = (bits + digit - 1) / digit;
   if (passes <= 0 || words.size() < 2) return;
   const std::size_t buckets = std::size_t{1} << digit;
-  // Pass p reads bits [low + p digit, ...), the last one only up to the key's end.
-  const auto mask = [&](int p) { return (std::uint64_t{1} << std::min(digit, bits - p * digit)) - 1; };
+  // Pass p reads bits [low + p digit, ...): `digit` of them, the last pass
+  // only those up to the key's end.
+  const std::uint64_t full = (std::uint64_t{1} << digit) - 1;
+  const std::uint64_t last = (std::uint64_t{1} << (bits - (passes - 1) * digit)) - 1;
+  const auto mask = [&](int p) { return p + 1 < passes ? full : last; };
   // start[p * (buckets + 1) + d + 1]: how many words have digit d in pass p.
   std::vector<std::size_t> start(static_cast<std::size_t>(passes) * (buckets + 1), 0);
-  const std::uint64_t last_mask = mask(passes - 1);
   for (std::uint64_t w : words) {
-    for (int p = 0; p + 1 < passes; ++p) ++start[p * (buckets + 1) + ((w >> (low + p * digit)) & mask(0)) + 1];
-    ++start[(passes - 1) * (buckets + 1) + ((w >> (low + (passes - 1) * digit)) & last_mask) + 1];
+    for (int p = 0; p + 1 < passes; ++p) ++start[p * (buckets + 1) + ((w >> (low + p * digit)) & full) + 1];
+    ++start[(passes - 1) * (buckets + 1) + ((w >> (low + (passes - 1) * digit)) & last) + 1];
   }
   scratch.resize(words.size());
   for (int p = 0; p < passes; ++p) {

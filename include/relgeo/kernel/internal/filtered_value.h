@@ -56,6 +56,11 @@ struct Filtered_value {
 
   static constexpr T u = std::numeric_limits<T>::epsilon() / 2;
   static constexpr T lambda = std::numeric_limits<T>::min();
+  // A constant here, not numeric_limits' call in error_bound(): under
+  // -frounding-math GCC converts the call's long double literal at run time,
+  // an x87 store of a subnormal, which costs a microcode assist (about a
+  // quarter of a gear's Boolean was spent on that one instruction).
+  static constexpr T denorm_min = std::numeric_limits<T>::denorm_min();
 
   friend Filtered_value operator+(const Filtered_value& a, const Filtered_value& b) { return sum(a, b, a.value + b.value); }
   friend Filtered_value operator-(const Filtered_value& a, const Filtered_value& b) { return sum(a, b, a.value - b.value); }
@@ -72,7 +77,7 @@ struct Filtered_value {
   /// denorm_min restores (it changes nothing above the subnormal range).
   T error_bound() const {
     const T ku = static_cast<T>(roundings + 3) * u;
-    return magnitude * (ku * (1 + 8 * ku)) + std::numeric_limits<T>::denorm_min();
+    return magnitude * (ku * (1 + 8 * ku)) + denorm_min;
   }
 
   /// The exact sign when the bound separates the value from 0 (or the

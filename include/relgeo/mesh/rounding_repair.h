@@ -237,23 +237,28 @@ class Rounding_repair {
   // Adds the defects of the faces `of` (sorted; in(f): f is one of them):
   // each degenerate one, and each pair of one of them and a live face that
   // meet. Pairs sharing a vertex flagged in `embedded` are left out (that
-  // certificate decides them). The live faces a block at a time (no box per
-  // face of the whole mesh at once), each block's boxes searched in a
-  // hierarchy of theirs; when they are at least a quarter of the live
-  // faces, defects_by_descent instead.
+  // certificate decides them). Pairs of two of them from their hierarchy's
+  // own descent, each pair once; the other live faces a block at a time (no
+  // box per face of the whole mesh at once), each block's boxes searched in
+  // that hierarchy. Two earlier searches were slower: every live face's box
+  // searched (each pair of two of them met twice: the elephant's union 5.0
+  // against 3.5 ms for the candidates), and one hierarchy of all live faces
+  // descended by groups (no pair of two others). With the latter the
+  // rounding phase of the benchmark's unions took longer, even with three
+  // faces in four to test (best of 40, ms): gear 28.7 against 28.0,
+  // elephant 7.9 against 5.5, armadillo 22.2 against 10.3.
   template <class In>
   void find_defects_of(const std::vector<Index>& of, In&& in, std::vector<Face_pair>& pairs,
                        std::vector<Index>& degenerate_faces, const std::vector<unsigned char>* embedded = nullptr) {
     for (Index f : of)
       if (known_degenerate(f)) degenerate_faces.push_back(f);
-    const auto live = static_cast<std::size_t>(std::count(removed_.begin(), removed_.end(), 0));
-    if (4 * of.size() >= live) {
-      defects_by_descent(in, pairs, embedded);
-      return;
-    }
     std::vector<Box_3> of_boxes;
     for (Index f : of) of_boxes.push_back(box(f));
     const Face_bvh hierarchy(of_boxes);
+    hierarchy.for_each_overlapping_pair([&](Index i, Index j) {
+      const Index f = of[i], g = of[j];
+      if (defect(f, g, embedded)) pairs.push_back({std::min(f, g), std::max(f, g)});
+    });
     const Index n = static_cast<Index>(m_.faces.size());
     constexpr Index block = 4096;
     std::vector<Index> faces;
@@ -261,35 +266,12 @@ class Rounding_repair {
     for (Index begin = 0; begin < n; begin += block) {
       faces.clear(), boxes.clear();
       for (Index f = begin; f < std::min(n, begin + block); ++f)
-        if (!removed_[f]) faces.push_back(f), boxes.push_back(box(f));
+        if (!removed_[f] && !in(f)) faces.push_back(f), boxes.push_back(box(f));
       for (const auto& [j, i] : hierarchy.overlapping_pairs_with_boxes(boxes)) {
         const Index f = faces[j], g = of[i];
-        // A pair of two of them is met twice: kept once.
-        if (f != g && !(in(f) && f > g) && defect(f, g, embedded)) pairs.push_back({std::min(f, g), std::max(f, g)});
+        if (defect(f, g, embedded)) pairs.push_back({std::min(f, g), std::max(f, g)});
       }
     }
-    std::sort(pairs.begin(), pairs.end());
-  }
-  // The same from one hierarchy of the live faces, whose descent stops at
-  // pairs of nodes holding none of the faces to test: faster when they are
-  // at least a quarter of the live faces (the first detection, a probe: on
-  // a gear's union, three faces in four, 17.4 ms with the blocks' joint
-  // descent against 15.2; on a rotor's, one in three, 6.9 ms with the box
-  // queries against 6.2), slower with fewer (the fandisk's, one in six: 4.7
-  // against 5.6 ms; the armadillo's: 6.2 against 10.8).
-  template <class In>
-  void defects_by_descent(In&& in, std::vector<Face_pair>& pairs, const std::vector<unsigned char>* embedded) {
-    std::vector<Index> faces;
-    std::vector<Box_3> boxes;
-    std::vector<std::uint16_t> outside;  // group 1: not one of them
-    for (Index f = 0; f < m_.faces.size(); ++f)
-      if (!removed_[f]) faces.push_back(f), boxes.push_back(box(f)), outside.push_back(in(f) ? 0 : 1);
-    const std::vector<Face_pair> found = Face_bvh(boxes).collect_overlapping_pairs_between_groups<Face_pair>(
-        outside, [&](Index i, Index j, std::vector<Face_pair>& out) {
-          const Index f = faces[i], g = faces[j];
-          if (defect(f, g, embedded)) out.push_back({std::min(f, g), std::max(f, g)});
-        });
-    pairs.insert(pairs.end(), found.begin(), found.end());
     std::sort(pairs.begin(), pairs.end());
   }
   // Distinct live faces f and g meet beyond what they share; false when

@@ -214,6 +214,45 @@ TEST(RoundingRepair, RepairsTheNearestRoundingOfABoolean) {
   for (Index f : maps.face_origin) EXPECT_LT(f, faces);
 }
 
+// The first detection's contract: every crossing pair of faces of which one
+// at least has a movable vertex (the other with one or not), and no other.
+// Two spheres that cross each other, in one mesh; the repair allowed no
+// round, so its remaining pairs are what the detection found. Checked
+// against the exact self-intersection test of the whole mesh, with the
+// movable vertices those of one sphere, then every third vertex of both.
+TEST(RoundingRepair, TheDetectionFindsEveryCrossingOfAFaceWithAMovableVertex) {
+  Mesh_double m = icosphere(2);
+  const Mesh_double other = icosphere(2, {0.6, 0.25, 0.1}, 0.8);
+  const auto first_of_other = static_cast<Index>(m.vertices.size());
+  m.vertices.insert(m.vertices.end(), other.vertices.begin(), other.vertices.end());
+  for (const Triangle& t : other.faces)
+    m.faces.push_back({t[0] + first_of_other, t[1] + first_of_other, t[2] + first_of_other});
+  const std::vector<Face_pair> crossings = find_self_intersections(m).pairs;
+  std::size_t one_active = 0, both_active = 0;
+  for (const bool every_third : {false, true}) {
+    std::vector<char> movable(m.vertices.size(), 0);
+    for (Index v = 0; v < m.vertices.size(); ++v) movable[v] = every_third ? v % 3 == 0 : v >= first_of_other;
+    const auto active = [&](Index f) {
+      return movable[m.faces[f][0]] || movable[m.faces[f][1]] || movable[m.faces[f][2]];
+    };
+    std::vector<Face_pair> expected;
+    for (const Face_pair& p : crossings)
+      if (active(p.first) || active(p.second)) {
+        expected.push_back(p);
+        ++(active(p.first) && active(p.second) ? both_active : one_active);
+      }
+    Mesh_double copy = m;
+    const Rounding_repair_report r = repair_rounding(copy, movable, {.max_rounds = 0});
+    EXPECT_EQ(r.defects_before, expected.size()) << every_third;
+    EXPECT_EQ(r.remaining_pairs, expected) << every_third;
+    EXPECT_EQ(copy.vertices, m.vertices);
+  }
+  // Both of the detection's searches were needed: pairs of two such faces,
+  // and pairs of one such face and another.
+  EXPECT_GT(one_active, 0u);
+  EXPECT_GT(both_active, 0u);
+}
+
 // Each round searches a hierarchy of the faces near its defects only, and
 // that of every face once a test leaves them. The repair must be the one
 // that searches every face (the code before 2026-11-30) when the hierarchy

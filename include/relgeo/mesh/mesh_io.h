@@ -1,7 +1,9 @@
 // relgeo/mesh/mesh_io.h — reading and writing triangle meshes (OFF, OBJ, PLY,
 // STL through CGAL's polygon-soup IO) and feature tags (a side file).
 //
-// Needs CGAL (link relgeo::cgal).
+// Needs CGAL (link relgeo::cgal). Its IO headers are parsed only in the
+// header-only use: a client that links relgeo::compiled calls the reader and
+// writer compiled there (internal/cgal_soup_io.h).
 //
 // Tag file format (".tags" by convention, next to the mesh file): text, one
 // entry per line, '#' starts a comment, indices 0-based into the mesh's
@@ -13,9 +15,6 @@
 // it works with every format and survives tools that rewrite the mesh file
 // without reordering its vertices.
 #pragma once
-
-#include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
 #include <cctype>
@@ -32,6 +31,7 @@
 #include "relgeo/core/errors.h"
 #include "relgeo/io/text_file.h"
 #include "relgeo/kernel/point_access.h"
+#include "relgeo/mesh/internal/cgal_soup_io.h"
 #include "relgeo/mesh/internal/off_reader.h"
 #include "relgeo/mesh/internal/off_writer.h"
 #include "relgeo/mesh/internal/ply_check.h"
@@ -146,7 +146,6 @@ inline void write_feature_tags(const std::string& path, const Feature_tags& tags
 /// Invalid_input / Invalid_mesh for polygons that are not triangles (unless
 /// triangulated) or bad indices. The mesh itself is not checked (check_mesh).
 inline Triangle_mesh<Point_3<double>> read_mesh(const std::string& path, const Read_options& options = {}) {
-  using CP = CGAL::Simple_cartesian<double>::Point_3;
   std::string text;
   {
     std::ifstream in(path, std::ios::binary);
@@ -170,20 +169,17 @@ inline Triangle_mesh<Point_3<double>> read_mesh(const std::string& path, const R
     require_finite(soup.points);  // the reader's are finite; x / w of 4OFF may not be
     m = from_polygon_soup(std::move(soup.points), soup.polygons(), soup_options);
   } else {
-    std::vector<CP> pts;
+    std::vector<Point_3<double>> points;
     std::vector<std::vector<std::size_t>> polys;
     if (extension == "ply") internal::check_ply_structure(text, path);
     if (extension == "stl") internal::check_binary_stl_size(text, path);
     bool ok = false;
     try {
-      ok = CGAL::IO::read_polygon_soup(path, pts, polys);
+      ok = internal::read_cgal_polygon_soup(path, points, polys);
     } catch (const std::exception& e) {
       throw Unreadable_file("cannot parse mesh file '" + path + "': " + e.what());
     }
     if (!ok) throw Unreadable_file("cannot parse mesh file '" + path + "' (OFF, OBJ, PLY or STL expected)");
-    std::vector<Point_3<double>> points;
-    points.reserve(pts.size());
-    for (const CP& p : pts) points.push_back({p.x(), p.y(), p.z()});
     require_finite(points);
     m = from_polygon_soup(std::move(points), polys, soup_options);
   }
@@ -198,7 +194,6 @@ inline Triangle_mesh<Point_3<double>> read_mesh(const std::string& path, const R
 /// \throws Unreadable_file when writing fails.
 template <class P>
 void write_mesh(const std::string& path, const Triangle_mesh<P>& m, const Write_options& options = {}) {
-  using CP = CGAL::Simple_cartesian<double>::Point_3;
   using A = internal::Point_access<P>;
   if (internal::lower_case_extension(path) == "off") {
     const auto xyz = [&](std::size_t v) {
@@ -214,17 +209,15 @@ void write_mesh(const std::string& path, const Triangle_mesh<P>& m, const Write_
     if (!options.tags_path.empty()) write_feature_tags(options.tags_path, m.tags);
     return;
   }
-  std::vector<CP> pts;
+  std::vector<Point_3<double>> pts;
   pts.reserve(m.vertices.size());
   for (const P& p : m.vertices)
-    pts.emplace_back(internal::coordinate_to_double(A::x(p)), internal::coordinate_to_double(A::y(p)),
-                     internal::coordinate_to_double(A::z(p)));
+    pts.push_back({internal::coordinate_to_double(A::x(p)), internal::coordinate_to_double(A::y(p)),
+                   internal::coordinate_to_double(A::z(p))});
   const auto polys = to_polygon_soup(m);
   bool ok = false;
   try {
-    ok = CGAL::IO::write_polygon_soup(
-        path, pts, polys,
-        CGAL::parameters::stream_precision(options.precision).use_binary_mode(options.binary));
+    ok = internal::write_cgal_polygon_soup(path, pts, polys, options.precision, options.binary);
   } catch (const std::exception& e) {
     throw Unreadable_file("cannot write mesh file '" + path + "': " + e.what());
   }

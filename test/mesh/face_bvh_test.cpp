@@ -52,7 +52,7 @@ std::vector<Face_pair> sorted(std::vector<Face_pair> v) {
 
 TEST(FaceBvh, CrossAndSelfPairsAreExactlyTheOverlappingBoxes) {
   for (Face_bvh_split split : {Face_bvh_split::morton, Face_bvh_split::median})
-  for (int leaf : {1, 2, 4, 7, 16})
+  for (int leaf : {1, 2, 4, 7, 16, 64})  // 64: the largest leaf, every bit of a leaf's overlap mask
     for (std::size_t n : {std::size_t(1), std::size_t(2), std::size_t(5), std::size_t(300), std::size_t(2000)}) {
       const auto a = random_boxes(n, 3 + n, 1.0, 0.08);
       const auto b = random_boxes(n + 7, 5 + n, 1.0, 0.05);

@@ -65,6 +65,8 @@ TEST(FaceBvh, CrossAndSelfPairsAreExactlyTheOverlappingBoxes) {
       EXPECT_EQ(sorted(with_boxes), brute_pairs(a, b)) << "leaf " << leaf << " n " << n;
       EXPECT_TRUE(std::is_sorted(with_boxes.begin(), with_boxes.end(),
                                  [](const Face_pair& x, const Face_pair& y) { return x.first < y.first; }));
+      // The two hierarchies' search in the queries' order: the same list.
+      EXPECT_EQ(ta.overlapping_pairs_in_query_order(tb), with_boxes) << "leaf " << leaf << " n " << n;
       std::size_t calls = 0;
       ta.for_each_overlapping_pair(tb, [&](Index, Index) { ++calls; });
       EXPECT_EQ(calls, brute_pairs(a, b).size());
@@ -151,6 +153,8 @@ TEST(FaceBvh, OutputDoesNotDependOnThreadCount) {
   EXPECT_EQ(with_boxes, tb2.overlapping_pairs_with_boxes(queries, 2));
   EXPECT_EQ(with_boxes, tb.overlapping_pairs_with_boxes(queries, 2));
   EXPECT_EQ(sorted(with_boxes), sorted(pairs1));
+  EXPECT_EQ(ta.overlapping_pairs_in_query_order(tb, 1), with_boxes);
+  EXPECT_EQ(ta2.overlapping_pairs_in_query_order(tb2, 2), with_boxes);
 }
 
 TEST(FaceBvh, BoxQueryFindsExactlyTheOverlappingFaces) {

@@ -265,6 +265,34 @@ class Face_bvh {
     return collect_overlapping_pairs<Face_pair>(
         other, [](Index a, Index b, std::vector<Face_pair>& out) { out.push_back({a, b}); }, threads);
   }
+  /// \brief overlapping_pairs(other) in the order of
+  /// other.overlapping_pairs_with_boxes(the face boxes of this hierarchy):
+  /// by face of this, then as other's hierarchy meets the faces. The search
+  /// of two hierarchies with the order of one query per box, for a caller
+  /// whose results depend on the order (the mesh Boolean numbers its new
+  /// points by it) and who has both hierarchies: the descent is shared
+  /// among neighbouring faces, where each query starts at the root (on
+  /// CGAL's armadillo against a 20K sphere 0.5 ms against 3.9, plus a
+  /// radix sort of the pairs).
+  std::vector<Face_pair> overlapping_pairs_in_query_order(const Face_bvh& other, int threads = 1) const {
+    // The descent meets the pairs of one face of this in other's slot order,
+    // the query's: it splits a pair of nodes into its children in order, so
+    // every pair under other's first child comes before those under its
+    // second (and the threads' parts join in the descent's order). A stable
+    // sort by this face alone then gives the queries' order.
+    std::vector<std::uint64_t> word = collect_overlapping_pairs<std::uint64_t>(
+        other, [](Index a, Index b, std::vector<std::uint64_t>& out) { out.push_back((std::uint64_t{a} << 32) | b); },
+        threads);
+    int face_bits = 1;
+    while (face_bits < 32 && (std::size_t{1} << face_bits) < size_) ++face_bits;
+    std::vector<std::uint64_t> scratch;
+    internal::radix_sort_bits(word, scratch, 32, face_bits);
+    std::vector<std::uint64_t>().swap(scratch);  // freed before the pairs take its room
+    std::vector<Face_pair> pairs(word.size());
+    for (std::size_t i = 0; i < word.size(); ++i)
+      pairs[i] = {static_cast<Index>(word[i] >> 32), static_cast<Index>(word[i] & 0xFFFFFFFFu)};
+    return pairs;
+  }
   /// Every pair of faces of this hierarchy (first < second) whose boxes overlap.
   std::vector<Face_pair> overlapping_pairs(int threads = 1) const {
     return collect_overlapping_pairs<Face_pair>(

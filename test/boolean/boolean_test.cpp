@@ -441,6 +441,28 @@ TEST(MeshBooleanThreads, TheResultDoesNotDependOnTheThreadCount) {
   }
 }
 
+// The broad phase searches the operands' hierarchies against each other:
+// with the checks on, those the checks built; without them, built there.
+// The pairs' order decides the new vertices' numbers and, on cocircular
+// points, the Delaunay faces: the hierarchies must be the same for the
+// Boolean not to depend on whether the checks ran.
+TEST(MeshBooleanBroadPhase, TheBooleanDoesNotDependOnWhetherTheChecksRan) {
+  const Mesh a = icosphere(4);
+  const Mesh turned = rigidly_moved(a, 0.05, 0.03, {0.002, 0.001, 0});
+  for (Op op : kOps) {
+    const auto checked = boolean(a, turned, op);
+    const auto unchecked = boolean(a, turned, op, Filtered_exact_kernel{},
+                                   Boolean_options{.check_operands = false, .check_self_intersections = false});
+    ASSERT_TRUE(checked.ok() && unchecked.ok()) << to_string(op);
+    EXPECT_EQ(checked.counts.checked_operands, 2u);
+    EXPECT_EQ(unchecked.counts.checked_operands, 0u);
+    EXPECT_EQ(checked.counts.candidate_pairs, unchecked.counts.candidate_pairs) << to_string(op);
+    EXPECT_EQ(checked.mesh.faces, unchecked.mesh.faces) << to_string(op);
+    EXPECT_EQ(checked.mesh.vertices, unchecked.mesh.vertices) << to_string(op);
+    EXPECT_EQ(checked.provenance, unchecked.provenance) << to_string(op);
+  }
+}
+
 TEST(MeshBooleanOperands, BadOperandsAreRefusedWithTheDefect) {
   const Mesh good = cube(0, 0, 0, 1);
   const auto defect_of = [&](const Mesh& bad) -> Mesh_defect {

@@ -230,8 +230,7 @@ class Csg_evaluator {
       if (!report.is_valid())
         throw Invalid_csg_node(path, "not a valid solid: " + std::string(Invalid_mesh("'" + n.name + "'", report.issues).what()));
       if (report.self_intersections_checked)
-        leaf_opposites_[n.mesh.get()] =
-            std::make_shared<const std::vector<Index>>(std::move(checked.topology).take_opposites());
+        leaf_opposites_[n.mesh.get()] = std::make_shared<const std::vector<Index>>(std::move(checked.opposites));
       return;
     }
     if (n.args.size() < 2)

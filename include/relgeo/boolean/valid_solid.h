@@ -39,7 +39,7 @@ class Valid_solid {
     internal::Checked_mesh checked;
     Mesh_report report = internal::check_solid<Filtered_exact_kernel>(m, {}, checked);
     if (!report.is_valid()) throw Invalid_operand("solid", std::move(report.issues));
-    held_ = std::make_shared<const Held>(Held{std::move(m), std::move(checked.topology).take_opposites()});
+    held_ = std::make_shared<const Held>(Held{std::move(m), std::move(checked.opposites)});
   }
 
   /// The output of a Boolean as a certified solid when the Boolean succeeded

@@ -203,6 +203,50 @@ std::vector<unsigned char> degenerate_face_flags(const K& k, const Points& point
   return degenerate_face_flags(projected_orientations(k, point, faces, /*every_plane=*/false));
 }
 
+/// The whole test in two steps: the constructor decides what needs no
+/// hierarchy (the kernel's points, the degenerate faces and, with the
+/// topology `t` of a manifold, consistently oriented mesh, the
+/// certificates: projected patches and embedded stars, whose pairs the
+/// search leaves out), `run` searches a face hierarchy of the mesh. The
+/// topology is not read after the constructor, so a caller can free it
+/// before it builds the hierarchy (check_solid: a topology and a hierarchy
+/// are never held together).
+template <Kernel K, class P>
+class Self_intersection_test {
+ public:
+  Self_intersection_test(const Triangle_mesh<P>& m, const K& k, const Mesh_topology* t)
+      : m_(m), k_(k), point_(m.vertices, k) {
+    out_.coordinates_exact = point_.exact();
+    // Every plane only when the certificates need them (the first strict
+    // sign decides degeneracy).
+    const std::vector<std::array<Certified_sign, 3>> projected =
+        projected_orientations(k, point_, m.faces, /*every_plane=*/t != nullptr);
+    skip_ = degenerate_face_flags(projected);
+    for (Index f = 0; f < skip_.size(); ++f)
+      if (skip_[f]) (skip_[f] == 1 ? out_.degenerate_faces : out_.undecided_faces).push_back(f);
+    if (!t) return;
+    patch_ = projected_patches(k, point_, m.faces, projected, skip_, *t);
+    embedded_ = embedded_star_flags(k, point_, m.faces, projected, skip_, *t, &patch_);
+    certified_ = true;
+  }
+  Self_intersections run(const Face_bvh& bvh, int threads) && {
+    if (certified_)
+      find_self_intersections(k_, point_, m_.faces, skip_, bvh, threads, out_, &embedded_, &patch_);
+    else
+      find_self_intersections(k_, point_, m_.faces, skip_, bvh, threads, out_);
+    return std::move(out_);
+  }
+
+ private:
+  const Triangle_mesh<P>& m_;
+  const K& k_;
+  const Kernel_points<K, P> point_;
+  Self_intersections out_;
+  std::vector<unsigned char> skip_, embedded_;
+  std::vector<std::uint16_t> patch_;
+  bool certified_ = false;
+};
+
 /// The whole test on a mesh whose face hierarchy `bvh` is built; with its
 /// topology `t` (a manifold, consistently oriented mesh) the pairs within a
 /// projected patch and around vertices with an embedded star are decided by
@@ -210,24 +254,7 @@ std::vector<unsigned char> degenerate_face_flags(const K& k, const Points& point
 template <Kernel K, class P>
 Self_intersections find_self_intersections(const Triangle_mesh<P>& m, const K& k, const Face_bvh& bvh,
                                            int threads, const Mesh_topology* t = nullptr) {
-  const Kernel_points<K, P> point(m.vertices, k);
-  Self_intersections out;
-  out.coordinates_exact = point.exact();
-  // Every plane only when the certificates need them (the first strict
-  // sign decides degeneracy).
-  const std::vector<std::array<Certified_sign, 3>> projected =
-      projected_orientations(k, point, m.faces, /*every_plane=*/t != nullptr);
-  const std::vector<unsigned char> skip = degenerate_face_flags(projected);
-  for (Index f = 0; f < skip.size(); ++f)
-    if (skip[f]) (skip[f] == 1 ? out.degenerate_faces : out.undecided_faces).push_back(f);
-  if (!t) {
-    find_self_intersections(k, point, m.faces, skip, bvh, threads, out);
-    return out;
-  }
-  const std::vector<std::uint16_t> patch = projected_patches(k, point, m.faces, projected, skip, *t);
-  const std::vector<unsigned char> embedded = embedded_star_flags(k, point, m.faces, projected, skip, *t, &patch);
-  find_self_intersections(k, point, m.faces, skip, bvh, threads, out, &embedded, &patch);
-  return out;
+  return Self_intersection_test<K, P>(m, k, t).run(bvh, threads);
 }
 
 }  // namespace internal
@@ -284,26 +311,37 @@ std::vector<std::pair<Index, Index>> self_intersections(const Triangle_mesh<P>& 
 namespace internal {
 
 /// What the checks of a mesh leave behind for a caller that goes on with the
-/// mesh (the Boolean): its topology and, when the self-intersection test
-/// ran, its face hierarchy.
+/// mesh (the Boolean): its half-edge opposites (Mesh_topology::opposite;
+/// to be read only when the report is valid) and, when the
+/// self-intersection test ran, its face hierarchy.
 struct Checked_mesh {
-  Mesh_topology topology;
+  std::vector<Index> opposites;
   std::optional<Face_bvh> bvh;
 };
 
 /// check_solid under kernel K, leaving what it built in `checked`; the test
-/// on `threads` threads (Self_intersection_options).
+/// on `threads` threads (Self_intersection_options). Of the topology only
+/// the opposites are kept, before the hierarchy is built: the peak memory
+/// is a topology or a hierarchy, not both (a caller holding another mesh's
+/// hierarchy, the Boolean, adds this one's to it).
 template <Kernel K, class P>
 Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& options, Checked_mesh& checked,
                         int threads = 1) {
-  Mesh_report r = internal::check_mesh<K>(m, options, checked.topology);
+  Mesh_topology topology;
+  Mesh_report r = internal::check_mesh<K>(m, options, topology);
   const bool can = !r.has(Mesh_defect::index_out_of_range) && !r.has(Mesh_defect::repeated_vertex_in_face) &&
                    r.is_manifold() && r.is_consistently_oriented() &&
                    !r.has(Mesh_defect::non_finite_coordinate);
-  if (!can) return r;
+  if (!can) {
+    checked.opposites = std::move(topology).take_opposites();
+    return r;
+  }
+  using Test_kernel = typename Kernel_for_point<Certified_kernel_for_number, P>::type;
+  const Test_kernel k{};
+  Self_intersection_test<Test_kernel, P> test(m, k, &topology);
+  checked.opposites = std::move(topology).take_opposites();
   const Face_bvh& bvh = checked.bvh.emplace(m, Face_bvh_options{.threads = threads});
-  const Self_intersections found = internal::find_self_intersections(
-      m, typename Kernel_for_point<Certified_kernel_for_number, P>::type{}, bvh, threads, &checked.topology);
+  const Self_intersections found = std::move(test).run(bvh, threads);
   if (!found.undecided.empty() || !found.undecided_faces.empty())
     throw Error(Error_code::computation_failure,
                 "check_solid: the kernel left " + std::to_string(found.undecided.size()) + " pairs and " +

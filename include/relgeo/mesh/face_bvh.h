@@ -283,10 +283,8 @@ class Face_bvh {
     std::vector<std::uint64_t> word = collect_overlapping_pairs<std::uint64_t>(
         other, [](Index a, Index b, std::vector<std::uint64_t>& out) { out.push_back((std::uint64_t{a} << 32) | b); },
         threads);
-    int face_bits = 1;
-    while (face_bits < 32 && (std::size_t{1} << face_bits) < size_) ++face_bits;
     std::vector<std::uint64_t> scratch;
-    internal::radix_sort_bits(word, scratch, 32, face_bits);
+    internal::radix_sort_bits(word, scratch, 32, static_cast<int>(std::bit_width(std::uint64_t{size_})));
     std::vector<std::uint64_t>().swap(scratch);  // freed before the pairs take its room
     std::vector<Face_pair> pairs(word.size());
     for (std::size_t i = 0; i < word.size(); ++i)

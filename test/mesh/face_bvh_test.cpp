@@ -303,6 +303,8 @@ TEST(FaceBvh, BadInputIsATypedError) {
   EXPECT_TRUE(empty.overlapping_pairs(Face_bvh(cube_sphere(2))).empty());
   EXPECT_TRUE(empty.overlapping_pairs_with_boxes(face_boxes(cube_sphere(2))).empty());
   EXPECT_TRUE(Face_bvh(cube_sphere(2)).overlapping_pairs_with_boxes({}).empty());
+  EXPECT_TRUE(empty.overlapping_pairs_in_query_order(Face_bvh(cube_sphere(2))).empty());
+  EXPECT_TRUE(Face_bvh(cube_sphere(2)).overlapping_pairs_in_query_order(empty).empty());
   EXPECT_TRUE(empty.bounds().is_empty());
 }
 

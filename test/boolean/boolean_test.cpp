@@ -14,6 +14,7 @@
 #include <string>
 
 #include "boolean_inputs.h"
+#include "mesh/solid_fixtures.h"
 #include "relgeo/boolean.h"
 #include "relgeo/kernel.h"
 #include "relgeo/mesh/self_intersection.h"
@@ -460,6 +461,46 @@ TEST(MeshBooleanBroadPhase, TheBooleanDoesNotDependOnWhetherTheChecksRan) {
     EXPECT_EQ(checked.mesh.faces, unchecked.mesh.faces) << to_string(op);
     EXPECT_EQ(checked.mesh.vertices, unchecked.mesh.vertices) << to_string(op);
     EXPECT_EQ(checked.provenance, unchecked.provenance) << to_string(op);
+  }
+}
+
+// With certified operands the validation searches a hierarchy of the open
+// faces only, and builds one of all the faces for the orientation test of
+// several components alone. A cavity (a cube minus a box inside it), two
+// shells (disjoint cubes), and two shells one of which was cut (an operand
+// of two cubes, a box through one of them): each component is oriented by
+// its nesting, as the validation without certificates finds. (Without a
+// hierarchy of all the faces every component looks unnested: the cavity
+// would be misoriented.)
+TEST(MeshBooleanValidation, SeveralComponentsAreOrientedWithCertifiedOperands) {
+  const Mesh two_cubes = relgeo_test::disjoint_union(cube(0, 0, 0, 1), cube(3, 0, 0, 1));
+  const struct {
+    const char* name;
+    Mesh a, b;
+    Op op;
+    long long volume_sign;  // of the cavity's component: -1, else +1 for all
+  } cases[] = {
+      {"cavity", cube(0, 0, 0, 1), box(0.25, 0.25, 0.25, 0.5, 0.5, 0.5), Op::difference, -1},
+      {"disjoint shells", cube(0, 0, 0, 1), box(3, 3, 3, 1, 1, 1), Op::union_of, 1},
+      {"a cut shell and a whole one", two_cubes, box(0.5, 0.25, 0.125, 1, 1, 1), Op::union_of, 1},
+  };
+  for (const auto& c : cases) {
+    const auto r = boolean(c.a, c.b, c.op);
+    ASSERT_TRUE(r.ok()) << c.name;
+    EXPECT_GT(r.counts.unchanged_certified_faces, 0u) << c.name;
+    EXPECT_EQ(r.validation.components, 2u) << c.name;
+    EXPECT_TRUE(r.validation.outward_oriented.passed()) << c.name << ": " << r.validation.summary();
+    EXPECT_TRUE(r.validation.is_valid_solid()) << c.name;
+    int negative = 0, nested = 0;  // a cavity: negative volume, inside the other component
+    for (const Solid_component& sc : r.validation.component_list) {
+      ASSERT_TRUE(sc.winding.has_value()) << c.name;
+      negative += sc.volume < 0, nested += *sc.winding == 1;
+    }
+    EXPECT_EQ(negative, c.volume_sign < 0 ? 1 : 0) << c.name;
+    EXPECT_EQ(nested, negative) << c.name;
+    const Solid_report full = validate_solid(r.mesh);
+    EXPECT_EQ(full.outward_oriented.status, r.validation.outward_oriented.status) << c.name;
+    EXPECT_EQ(full.self_intersection_free.status, r.validation.self_intersection_free.status) << c.name;
   }
 }
 

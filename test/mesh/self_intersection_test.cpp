@@ -306,9 +306,10 @@ TEST(ProjectedPatches, CheckSolidFindsThePairwiseTestsPairsOnDentedSolids) {
 
 // The certified search finds every pair the pairwise test finds but those
 // of two faces of one group, whatever the groups and the thread count: on
-// a soup of random triangles crossing each other often, the descent that
-// stops at certified nodes still meets every open face, and the cross pairs
-// (from the caller's list only) are all tested.
+// a soup of random triangles crossing each other often, the open faces'
+// hierarchy meets every pair with an open face (its self search and the
+// certified faces' queries), and the cross pairs (from the caller's list
+// only) are all tested, each candidate once.
 TEST(CertifiedFaces, TheSearchLeavesOutOnlyThePairsWithinOneGroup) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> at(0, 4), offset(-0.6, 0.6);
@@ -337,10 +338,13 @@ TEST(CertifiedFaces, TheSearchLeavesOutOnlyThePairsWithinOneGroup) {
     for (const Face_pair& p : all)
       if (!(group[p.first] && group[p.first] == group[p.second])) expected.push_back(p);
     ASSERT_FALSE(expected.empty());
+    std::size_t with_open_face = 0;  // candidate pairs besides the cross pairs
+    bvh.for_each_overlapping_pair([&](Index f, Index g) { with_open_face += !group[f] || !group[g]; });
     for (const int threads : {1, 2}) {
       Self_intersections found;
-      internal::find_self_intersections(k, point, m.faces, skip, bvh, certified, threads, found);
+      internal::find_self_intersections(k, m, point, skip, certified, threads, found);
       EXPECT_EQ(found.pairs, expected) << "trial " << trial << ", " << threads << " threads";
+      EXPECT_EQ(found.candidate_pairs, with_open_face + certified.cross_pairs.size()) << "trial " << trial;
       EXPECT_TRUE(found.undecided.empty());
     }
   }

@@ -52,6 +52,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -104,6 +105,25 @@ template <class BoxA, class BoxB>
 /// Whether two closed boxes share a point (touching counts).
 [[gnu::always_inline]] inline bool do_overlap(const Box_3& a, const Box_3& b) {
   return detail::closed_boxes_overlap(a, b);
+}
+
+/// The box of face `t` of `m`, as face_boxes forms it. \pre valid indices
+/// and finite coordinates; the default floating-point environment (min and
+/// max of subnormal bounds: see the file comment).
+template <class P>
+Box_3 face_box(const Triangle_mesh<P>& m, const Triangle& t) {
+  using A = internal::Point_access<P>;
+  Box_3 b;
+  for (Index v : t) {
+    const P& p = m.vertices[v];
+    if constexpr (std::is_same_v<typename A::FT, double>) {
+      b.extend(A::x(p), A::y(p), A::z(p));
+    } else {
+      b.extend(lower_double(A::x(p)), lower_double(A::y(p)), lower_double(A::z(p)));
+      b.extend(upper_double(A::x(p)), upper_double(A::y(p)), upper_double(A::z(p)));
+    }
+  }
+  return b;
 }
 
 /// \brief The box of every face: the smallest box of doubles containing its

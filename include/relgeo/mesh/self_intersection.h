@@ -111,8 +111,8 @@ inline void sort_hits(const std::vector<Self_intersection_hit>& hits, Self_inter
 /// and faces flagged degenerate (1), undecided (2) or testable (0). Pairs
 /// sharing a vertex flagged in `embedded` (embedded_star_flags) are decided
 /// by that certificate, and pairs of faces in one nonzero `group` (a
-/// projected patch, projected_patches.h, or Certified_faces::group, below)
-/// by theirs: the search leaves them out.
+/// projected patch, projected_patches.h) by theirs: the search leaves them
+/// out.
 template <Kernel K, class Points>
 void find_self_intersections(const K& k, const Points& point, const std::vector<Triangle>& faces,
                              const std::vector<unsigned char>& skip, const Face_bvh& bvh, int threads,
@@ -143,40 +143,67 @@ struct Certified_faces {
 };
 
 /// The narrow phase on what the certificates leave open: every pair with a
-/// face outside the groups, found by `bvh`'s own descent (the hierarchy of
-/// all the faces), which stops at pairs of nodes holding certified faces
-/// only; and the cross pairs. Two faces of one group meet only where they
-/// share a vertex or an edge, as in their certified mesh; pairs sharing a
-/// vertex flagged in `embedded` are decided by that certificate.
-template <Kernel K, class Points>
-void find_self_intersections(const K& k, const Points& point, const std::vector<Triangle>& faces,
-                             const std::vector<unsigned char>& skip, const Face_bvh& bvh,
-                             const Certified_faces& certified, int threads, Self_intersections& out,
-                             const std::vector<unsigned char>* embedded = nullptr) {
-  // One group for all certified faces: the descent then leaves out the
-  // cross pairs too (whose boxes overlap more often than those of the open
-  // faces; the caller's list has them).
-  std::vector<std::uint16_t> closed(faces.size());
-  for (Index f = 0; f < faces.size(); ++f) closed[f] = certified.group[f] != 0;
-  find_self_intersections(k, point, faces, skip, bvh, threads, out, embedded, &closed);
-  // Fixed chunks: the same hits whatever the thread count.
+/// face outside the groups (an open face) whose boxes overlap, and the
+/// cross pairs. Two faces of one group meet only where they share a vertex
+/// or an edge, as in their certified mesh; pairs sharing a vertex flagged in
+/// `embedded` are decided by that certificate. The open faces get a
+/// hierarchy of their own: its self search gives the pairs of two open
+/// faces, each certified face's box queried in it the pairs of a certified
+/// and an open face. (A hierarchy of all the faces, whose descent stops at
+/// pairs of certified nodes, finds the same pairs; building it was most of
+/// the search, the open faces being a few percent of a Boolean's output:
+/// doc/boolean.md, "The validation's search from the open faces".)
+/// \pre valid indices and finite coordinates.
+template <Kernel K, class P, class Points>
+void find_self_intersections(const K& k, const Triangle_mesh<P>& m, const Points& point,
+                             const std::vector<unsigned char>& skip, const Certified_faces& certified, int threads,
+                             Self_intersections& out, const std::vector<unsigned char>* embedded = nullptr) {
+  const Default_fp_environment environment;  // the boxes (face_box)
+  const std::vector<Triangle>& faces = m.faces;
+  const std::vector<std::uint8_t>& group = certified.group;
+  const auto test = [&](Index f, Index g, std::vector<Self_intersection_hit>& found) {
+    if (skip[f] || skip[g]) return;
+    if (embedded && share_embedded_star(faces[f], faces[g], *embedded)) return;
+    test_face_pair(k, point, faces, f, g, found);
+  };
+  std::vector<Index> open;  // increasing: faces i < j of its hierarchy are open[i] < open[j]
+  for (Index f = 0; f < faces.size(); ++f)
+    if (!group[f]) open.push_back(f);
+  std::vector<Box_3> open_boxes(open.size());
+  for (std::size_t i = 0; i < open.size(); ++i) open_boxes[i] = face_box(m, faces[open[i]]);
+  const Face_bvh open_bvh(std::span<const Box_3>(open_boxes), Face_bvh_options{.threads = threads});
+  std::vector<Box_3>().swap(open_boxes);  // the hierarchy holds its copy
+
+  std::size_t open_pairs = 0;
+  std::vector<Self_intersection_hit> hits = open_bvh.collect_overlapping_pairs<Self_intersection_hit>(
+      [&](Index i, Index j, std::vector<Self_intersection_hit>& found) { test(open[i], open[j], found); }, threads,
+      &open_pairs);
+  // The certified faces' queries and the cross pairs, in fixed chunks: the
+  // same hits whatever the thread count.
   const std::vector<Face_pair>& cross = certified.cross_pairs;
   constexpr std::size_t chunk = 1024;
-  std::vector<std::vector<Self_intersection_hit>> parts((cross.size() + chunk - 1) / chunk);
+  const std::size_t query_chunks = (faces.size() + chunk - 1) / chunk;
+  const std::size_t cross_chunks = (cross.size() + chunk - 1) / chunk;
+  std::vector<std::vector<Self_intersection_hit>> parts(query_chunks + cross_chunks);
+  std::vector<std::size_t> queried_pairs(query_chunks, 0);
   parallel_for_each_index(parts.size(), threads, [&](std::size_t c) {
-    for (std::size_t i = c * chunk; i < std::min(cross.size(), (c + 1) * chunk); ++i) {
-      const auto [f, g] = cross[i];
-      if (!skip[f] && !skip[g] && !(embedded && share_embedded_star(faces[f], faces[g], *embedded)))
-        test_face_pair(k, point, faces, f, g, parts[c]);
+    if (c < query_chunks) {
+      for (Index f = static_cast<Index>(c * chunk); f < std::min(faces.size(), (c + 1) * chunk); ++f) {
+        if (!group[f]) continue;
+        open_bvh.for_each_face_in_box(face_box(m, faces[f]), [&](Index i) {
+          ++queried_pairs[c];
+          test(std::min(f, open[i]), std::max(f, open[i]), parts[c]);
+        });
+      }
+      return;
     }
+    const std::size_t first = (c - query_chunks) * chunk;
+    for (std::size_t i = first; i < std::min(cross.size(), first + chunk); ++i)
+      test(cross[i].first, cross[i].second, parts[c]);
   });
-  out.candidate_pairs += cross.size();
-  std::vector<Self_intersection_hit> hits;
+  out.candidate_pairs += open_pairs + cross.size();
+  for (std::size_t n : queried_pairs) out.candidate_pairs += n;
   for (const auto& part : parts) hits.insert(hits.end(), part.begin(), part.end());
-  if (hits.empty()) return;
-  for (const Face_pair& p : out.pairs) hits.push_back({p, true});
-  for (const Face_pair& p : out.undecided) hits.push_back({p, false});
-  out.pairs.clear(), out.undecided.clear();
   sort_hits(hits, out);
 }
 

@@ -285,12 +285,16 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
     *opposites_out = std::move(topology).take_opposites();
   else
     topology = Mesh_topology();
-  const Face_bvh bvh(m, {.threads = o.threads});
-  if (certified)
-    internal::find_self_intersections(k, point, m.faces, skip, bvh, *certified, o.threads, si, star_flags);
-  else
-    internal::find_self_intersections(k, point, m.faces, skip, bvh, o.threads, si, star_flags,
+  // A hierarchy of all the faces for the search without certificates; with
+  // them the search builds one of the open faces only.
+  std::optional<Face_bvh> bvh;
+  if (certified) {
+    internal::find_self_intersections(k, m, point, skip, *certified, o.threads, si, star_flags);
+  } else {
+    bvh.emplace(m, Face_bvh_options{.threads = o.threads});
+    internal::find_self_intersections(k, point, m.faces, skip, *bvh, o.threads, si, star_flags,
                                       stars ? &group : nullptr);
+  }
   r.candidate_pairs = si.candidate_pairs;
   for (const Face_pair& p : si.pairs)
     internal::record(r.self_intersection_free, {Mesh_defect::self_intersection, {p.first, p.second}}, o.max_listed);
@@ -325,7 +329,10 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
     internal::not_checked(r.outward_oriented, "no faces: no solid");
     return r;
   }
-  internal::report_orientation(k, m, point, bvh, comps, volumes, o, r);
+  // The orientation test reads the hierarchy only for several components
+  // (internal/component_winding.h).
+  if (!bvh) bvh = comps.size() > 1 ? Face_bvh(m, Face_bvh_options{.threads = o.threads}) : Face_bvh();
+  internal::report_orientation(k, m, point, *bvh, comps, volumes, o, r);
   return r;
 }
 

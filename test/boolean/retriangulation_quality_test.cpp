@@ -15,7 +15,9 @@
 #include <utility>
 
 #include "boolean_chains.h"
+#include "boolean_inputs.h"
 #include "relgeo/boolean.h"
+#include "relgeo/boolean/internal/face_triangulation.h"
 
 namespace relgeo::test {
 namespace {
@@ -153,6 +155,49 @@ TEST(RetriangulationQuality, TheFlipsDoNotDependOnTheKernel) {
   ASSERT_TRUE(filtered.ok() && exact.ok()) << filtered.failure << exact.failure;
   EXPECT_EQ(filtered.mesh.faces.size(), exact.mesh.faces.size());
   EXPECT_EQ(quality_of(filtered).non_delaunay_edges, 0u);
+}
+
+// A face with many points: the cube's top face (two triangles) holds the
+// whole circle where the sphere crosses it, dozens of points inside each
+// triangle, past the 32 the triangulator finds by a scan
+// (internal::Few_keys_map): its lookups then go through the hash map.
+TEST(RetriangulationQuality, AFaceCrossedByManyCurvesIsConstrainedDelaunayToo) {
+  const Mesh_double a = cube(0, 0, 0, 2), b = icosphere(4, {1, 1, 1.7}, 0.9);
+  std::array<double, 2> volumes{};
+  for (const Op op : {Op::union_of, Op::intersection}) {
+    SCOPED_TRACE(to_string(op));
+    const auto r = boolean(a, b, op, Filtered_exact_kernel{});
+    ASSERT_TRUE(r.ok()) << r.failure;
+    EXPECT_TRUE(r.validation.is_valid_solid()) << r.validation.summary();
+    EXPECT_EQ(quality_of(r).non_delaunay_edges, 0u);
+    std::map<Index, std::size_t> inside;  // the points inside each face of the cube
+    for (const auto& at : r.vertex_locations)
+      if (at[0].kind == Surface_location::Kind::face) ++inside[at[0].face];
+    std::size_t most = 0;
+    for (const auto& [face, n] : inside) most = std::max(most, n);
+    EXPECT_GT(most, 64u) << "points inside one face of the cube";
+    volumes[op == Op::union_of ? 0 : 1] = volume(r.mesh);
+  }
+  const double sum = volume(a) + volume(b);
+  EXPECT_NEAR(volumes[0] + volumes[1], sum, 1e-12 * sum);
+}
+
+TEST(FewKeysMap, FindsEveryKeyBeforeAndAfterMovingToTheHashMap) {
+  internal::Few_keys_map<Index, int> map;
+  for (int round = 0; round < 2; ++round) {  // the second after clear()
+    for (Index k = 0; k < 100; ++k) {
+      EXPECT_EQ(map.find(3 * k + 1), nullptr);
+      map.insert(3 * k + 1, static_cast<int>(k));
+      for (Index j = 0; j <= k; j += 7) {
+        const int* v = map.find(3 * j + 1);
+        ASSERT_NE(v, nullptr) << "key " << 3 * j + 1 << " after " << k + 1 << " keys";
+        EXPECT_EQ(*v, static_cast<int>(j));
+      }
+      EXPECT_EQ(map.find(3 * k + 2), nullptr);
+    }
+    map.clear();
+    EXPECT_EQ(map.find(1), nullptr);
+  }
 }
 
 }  // namespace

@@ -41,7 +41,6 @@
 #include <limits>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -51,6 +50,46 @@
 #include "relgeo/mesh/triangle_mesh.h"
 
 namespace relgeo::internal {
+
+/// A map of the few keys of one face (its points, its constraint edges):
+/// most faces have a handful, looked up by a scan of a vector that keeps
+/// its memory from face to face; a face with many (a large face crossed by
+/// many curves) moves them into a hash map. The hash maps alone allocated
+/// a node per key: with the copies and the queue below, malloc and free
+/// were an eighth of the retriangulation on CGAL's elephant.
+template <class Key, class Value>
+class Few_keys_map {
+ public:
+  void clear() {
+    few_.clear();
+    if (!many_.empty()) many_.clear();
+  }
+  const Value* find(Key k) const {
+    if (!many_.empty()) {
+      const auto it = many_.find(k);
+      return it == many_.end() ? nullptr : &it->second;
+    }
+    for (const auto& [key, value] : few_)
+      if (key == k) return &value;
+    return nullptr;
+  }
+  /// \pre k is not in the map.
+  void insert(Key k, Value v) {
+    if (many_.empty()) {
+      if (few_.size() < scan_limit) {
+        few_.emplace_back(k, v);
+        return;
+      }
+      for (const auto& [key, value] : few_) many_.emplace(key, value);
+    }
+    many_.emplace(k, v);
+  }
+
+ private:
+  static constexpr std::size_t scan_limit = 32;
+  std::vector<std::pair<Key, Value>> few_;
+  std::unordered_map<Key, Value> many_;  // every key, once there are more than scan_limit
+};
 
 /// What lies on one face: its corners (as in the mesh), the points inside
 /// each edge i (from corner i to corner i + 1, any order), the points inside
@@ -147,18 +186,18 @@ class Face_triangulator {
   }
 
   int local(Index g) {
-    const auto [it, added] = local_of_.try_emplace(g, static_cast<int>(global_.size()));
-    if (added) {
-      const Approximate_point_3 a = points_.approximation(g);
-      global_.push_back(g);
-      box_.push_back(enclosure(a));
-      plane_.push_back(in_frame(a.point));
-      // The approximations of certified kernels are within a few ulps of
-      // their points; 2^-40 of the largest coordinate bounds that with room
-      // (and the rounding of in_frame), the same for every kernel.
-      blur_.push_back(0x1p-40 * unit_ * std::max({std::abs(a.point.x), std::abs(a.point.y), std::abs(a.point.z)}));
-    }
-    return it->second;
+    if (const int* known = local_of_.find(g)) return *known;
+    const int l = static_cast<int>(global_.size());
+    local_of_.insert(g, l);
+    const Approximate_point_3 a = points_.approximation(g);
+    global_.push_back(g);
+    box_.push_back(enclosure(a));
+    plane_.push_back(in_frame(a.point));
+    // The approximations of certified kernels are within a few ulps of
+    // their points; 2^-40 of the largest coordinate bounds that with room
+    // (and the rounding of in_frame), the same for every kernel.
+    blur_.push_back(0x1p-40 * unit_ * std::max({std::abs(a.point.x), std::abs(a.point.y), std::abs(a.point.z)}));
+    return l;
   }
 
   // ---- enclosing boxes --------------------------------------------------------------
@@ -205,7 +244,8 @@ class Face_triangulator {
 
   bool insert_edge_points(const Face_constraints& f) {
     for (int e = 0; e < 3; ++e) {
-      std::vector<Index> pts = f.edge_points[e];
+      std::vector<Index>& pts = edge_points_;
+      pts.assign(f.edge_points[e].begin(), f.edge_points[e].end());
       const Index from = f.corners[e], to = f.corners[(e + 1) % 3];
       // Along the edge from `from` to `to`: compare_xyz orders a line's points
       // monotonically, increasing or decreasing with the direction.
@@ -273,9 +313,9 @@ class Face_triangulator {
   // approximations in the face's frame (x, then y); in the given order
   // without the flips (run) or when an approximation is not finite (a kernel
   // that cannot bound its points).
-  std::vector<int> interior_points_in_order(const Face_constraints& f) {
-    std::vector<int> order;
-    order.reserve(f.interior_points.size());
+  const std::vector<int>& interior_points_in_order(const Face_constraints& f) {
+    std::vector<int>& order = interior_order_;
+    order.clear();
     bool finite = true;
     for (Index g : f.interior_points) {
       const int p = local(g);
@@ -356,7 +396,9 @@ class Face_triangulator {
     // Sloan's queue: the edges crossing ab; an edge whose quadrilateral is
     // not convex goes to the back, a flipped one whose new diagonal still
     // crosses ab too (so no edge is flipped back and forth). Bounded for safety.
-    std::deque<std::array<int, 2>> crossing;
+    // (A member: the recursive calls above return before it is used.)
+    std::deque<std::array<int, 2>>& crossing = crossing_;
+    crossing.clear();
     for (const Tri& t : tris_) {
       if (!t.alive) continue;
       for (int k = 0; k < 3; ++k) {
@@ -389,7 +431,7 @@ class Face_triangulator {
       if (c == 1) crossing.push_back({std::min(p, q), std::max(p, q)});
     }
     if (!has_edge(a, b)) return failed("no flip makes a constraint segment an edge");
-    constrained_.insert(edge_key(a, b));
+    if (!is_constrained(a, b)) constrained_.insert(edge_key(a, b), true);
     return true;
   }
 
@@ -572,7 +614,7 @@ class Face_triangulator {
   static std::uint64_t edge_key(int x, int y) {
     return (std::uint64_t(std::uint32_t(std::min(x, y))) << 32) | std::uint32_t(std::max(x, y));
   }
-  bool is_constrained(int x, int y) const { return constrained_.count(edge_key(x, y)) != 0; }
+  bool is_constrained(int x, int y) const { return constrained_.find(edge_key(x, y)) != nullptr; }
 
   // ---- bookkeeping --------------------------------------------------------------
 
@@ -606,7 +648,7 @@ class Face_triangulator {
   int axis_ = 2;
   Certified_sign sigma_ = Certified_sign::zero;
   std::vector<Index> global_;                  // local -> the Boolean's index
-  std::unordered_map<Index, int> local_of_;    // the Boolean's index -> local
+  Few_keys_map<Index, int> local_of_;          // the Boolean's index -> local
   std::vector<Box> box_;                       // of each local point
   std::vector<std::array<double, 2>> plane_;   // of each local point, in the face's frame
   std::vector<double> blur_;                   // of each local point: how far its approximation may be off, in the frame
@@ -615,8 +657,12 @@ class Face_triangulator {
   double unit_ = 1;                            // the frame's length scale (a power of two)
   std::vector<Certified_sign> side_;           // against the segment being inserted (uncertain: not computed)
   std::vector<Tri> tris_;
-  std::unordered_set<std::uint64_t> constrained_;
+  Few_keys_map<std::uint64_t, bool> constrained_;  // the constraint edges inserted (edge_key)
   std::string failure_;
+  // Working memory of one face, kept from face to face.
+  std::vector<Index> edge_points_;
+  std::vector<int> interior_order_;
+  std::deque<std::array<int, 2>> crossing_;
 };
 
 }  // namespace relgeo::internal

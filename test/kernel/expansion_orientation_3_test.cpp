@@ -20,7 +20,7 @@ namespace relgeo::internal {
 namespace {
 
 using analysis::moved_by_ulps;
-using Case = std::array<double, 12>;
+using Coplanar_case = std::array<double, 12>;
 using Range = Expansion_orientation_3_range;
 
 // Full 53-bit significands of magnitude in [2^-8, 1), either sign: their
@@ -32,8 +32,8 @@ double uniform(std::mt19937_64& g) {
 
 // s on the plane pqr (rounded), moved by up to `ulps` ulps per coordinate,
 // everything scaled by 2^scale (exact in range).
-Case near_coplanar(std::mt19937_64& g, int scale, int ulps) {
-  Case c;
+Coplanar_case near_coplanar(std::mt19937_64& g, int scale, int ulps) {
+  Coplanar_case c;
   for (int k = 0; k < 9; ++k) c[k] = uniform(g) * (k < 3 ? 1 : 8);
   const double a = uniform(g), b = uniform(g);
   for (int d = 0; d < 3; ++d) {
@@ -45,14 +45,14 @@ Case near_coplanar(std::mt19937_64& g, int scale, int ulps) {
 }
 
 // Exactly coplanar (s = q) with mostly inexact differences.
-Case exactly_coplanar(std::mt19937_64& g, int scale) {
-  Case c;
+Coplanar_case exactly_coplanar(std::mt19937_64& g, int scale) {
+  Coplanar_case c;
   for (int k = 0; k < 9; ++k) c[k] = std::ldexp(uniform(g), scale);
   for (int d = 0; d < 3; ++d) c[9 + d] = c[3 + d];  // s = q: D = 0 exactly
   return c;
 }
 
-bool in_range(const Case& c) {
+bool in_range(const Coplanar_case& c) {
   for (double v : c)
     if (!Range::contains(v)) return false;
   return true;
@@ -63,7 +63,7 @@ struct Steps {
   std::size_t of(Expansion_step s) const { return by_step[static_cast<int>(s)]; }
 };
 
-void expect_agreement(const Case& c, Steps& steps) {
+void expect_agreement(const Coplanar_case& c, Steps& steps) {
   const auto e = expansion_orientation_3_with_step(c);
   ASSERT_EQ(e.has_value(), in_range(c)) << std::hexfloat << c[0] << ' ' << c[9];
   if (!e) return;
@@ -100,7 +100,7 @@ TEST(ExpansionOrientation3, AgreesWithGmpOverTheRange) {
   std::size_t cases = 0;
   for (int scale = -246; scale <= 296; scale += 2) {
     for (int i = 0; i < 360; ++i, ++cases) {
-      Case c;
+      Coplanar_case c;
       switch (i % 6) {
         case 0: c = exactly_coplanar(g, scale); break;
         case 1: {  // integer points, coplanar or nearly: exact differences
@@ -139,7 +139,7 @@ TEST(ExpansionOrientation3, MixedMagnitudesZerosAndEdges) {
       const double m = 1 + static_cast<double>(g() >> 12) * 0x1p-52;  // [1, 2)
       return (g() % 2 ? -1 : 1) * std::ldexp(m, e);
     };
-    Case c;
+    Coplanar_case c;
     for (double& x : c) x = v();
     if (g() % 2) c[9] = c[0], c[4] = c[1];  // shared coordinates: exact zero parts
     if (g() % 4 == 0) c[11] = c[5];
@@ -150,14 +150,14 @@ TEST(ExpansionOrientation3, MixedMagnitudesZerosAndEdges) {
 }
 
 TEST(ExpansionOrientation3, RefusesOutsideItsRange) {
-  Case c{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  Coplanar_case c{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   EXPECT_EQ(expansion_orientation_3(c), Certified_sign::positive);
   c[11] = -0x1p300;
   EXPECT_EQ(expansion_orientation_3(c), Certified_sign::negative);
   c[4] = 0x1p-250;
   EXPECT_EQ(expansion_orientation_3(c), Certified_sign::negative);
   for (double bad : {0x1p301, 0x1.0000000000001p300, 0x1.fffffffffffffp-251, std::nan(""), double(INFINITY)}) {
-    Case d = c;
+    Coplanar_case d = c;
     d[7] = bad;
     EXPECT_FALSE(expansion_orientation_3(d).has_value()) << bad;
   }

@@ -22,8 +22,6 @@ using namespace relgeo;
 using namespace relgeo_test;
 using Mesh_q = Triangle_mesh<Point_3<mpq_class>>;
 
-const Loop_options hoppe{}, blz{.crease_rules = Loop_crease_rules::biermann_levin_zorin};
-
 struct Measure {
   long samples = 0, violations[3] = {0, 0, 0};
   long thesis_samples_outside = 0, thesis_faces_outside = 0;

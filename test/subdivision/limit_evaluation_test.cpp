@@ -22,8 +22,6 @@ using Pd = Point_3<double>;
 using Exact = Loop_limit_surface<Exact_kernel>;
 using Approx = Loop_limit_surface<Naive_kernel<double>>;
 
-const Loop_options hoppe{}, blz{.crease_rules = Loop_crease_rules::biermann_levin_zorin};
-
 double dist(const Pd& a, const Pd& b) { return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z); }
 Pd to_d(const Pq& p) { return {p.x.get_d(), p.y.get_d(), p.z.get_d()}; }
 

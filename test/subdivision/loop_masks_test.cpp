@@ -16,8 +16,6 @@ using namespace relgeo_test;
 using Mesh_q = Triangle_mesh<Point_3<mpq_class>>;
 using Pq = Point_3<mpq_class>;
 
-const Loop_options hoppe{}, blz{.crease_rules = Loop_crease_rules::biermann_levin_zorin};
-
 TEST(LoopStencils, RefinementFastPathEqualsTheStencilsExactly) {
   for (const Loop_options& o : {hoppe, blz, Loop_options{.vertex_weights = Loop_vertex_weights::warren}})
     for (const Mesh_d& m : {creased_box(), open_grid(3), bipyramid(7), disk(7, 3), half_fan(5), torus(4, 3)}) {

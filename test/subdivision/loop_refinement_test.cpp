@@ -16,9 +16,6 @@ using namespace relgeo;
 using namespace relgeo_test;
 using Mesh_q = Triangle_mesh<Point_3<mpq_class>>;
 
-const Loop_options hoppe{}, warren{.vertex_weights = Loop_vertex_weights::warren},
-    blz{.crease_rules = Loop_crease_rules::biermann_levin_zorin};
-
 std::vector<Mesh_d> corpus() {
   return {tetrahedron(), octahedron(), icosphere(1), torus(6, 5), creased_box(), open_grid(3),
           bipyramid(3), bipyramid(7), bipyramid(12), disk(7, 3), half_fan(5)};

@@ -10,6 +10,12 @@
 
 namespace relgeo_test {
 
+/// The rule sets the suites run Loop subdivision under: Hoppe et al.'s
+/// creases (the default), Warren's vertex weights, Biermann, Levin and
+/// Zorin's creases.
+inline const relgeo::Loop_options hoppe{}, warren{.vertex_weights = relgeo::Loop_vertex_weights::warren},
+    blz{.crease_rules = relgeo::Loop_crease_rules::biermann_levin_zorin};
+
 /// A disk around vertex 0 of valence n: ring 1 (vertices 1..n, interior), ring
 /// 2 (n + 1 .. 2n, the boundary), 3n faces. Vertex 0 is smooth; with
 /// creases_at = {0, k}, the edges (0, 1) and (0, 1 + k) are tagged creases, so

@@ -12,20 +12,22 @@ set(relgeo_tool_facade_sources
   commands/orient_grid/dispatch.cpp
   commands/hull/facade.cpp
   commands/hull/dispatch.cpp
-  commands/hull/report.cpp
   commands/linsolve/facade.cpp
   commands/linsolve/dispatch.cpp
   commands/extrusion/dispatch.cpp
-  commands/extrusion/report.cpp
   commands/subdivide/dispatch_float.cpp
   commands/subdivide/dispatch_exact.cpp
   commands/boolean/names.cpp
   commands/boolean/dispatch.cpp
-  commands/boolean/report.cpp
   commands/boolean/dispatch_subdivision.cpp
-  commands/boolean/subdivision_report.cpp
   commands/csg/dispatch.cpp
   commands/csg/tree.cpp
-  commands/csg/report.cpp
   commands/join/dispatch.cpp
   commands/join/facade.cpp)
+# Their JSON records (untimed: relgeo_untimed).
+set(relgeo_tool_facade_report_sources
+  commands/hull/report.cpp
+  commands/extrusion/report.cpp
+  commands/boolean/report.cpp
+  commands/boolean/subdivision_report.cpp
+  commands/csg/report.cpp)

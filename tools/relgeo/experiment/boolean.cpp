@@ -59,8 +59,6 @@ std::vector<Boolean_case> boolean_cases(bool quick) {
   };
 }
 
-std::string g3(double v) { return measure_text(v, 3); }
-
 // The output bounds a solid, up to what the operation and rounding may
 // legitimately give: closed, consistently oriented, no degenerate face, a
 // positive volume (exact sum) and no failed outward-orientation test (that
@@ -187,7 +185,7 @@ class Boolean_experiment {
                           " defects after nearest rounding; " + std::to_string(run.rounding.moved_vertices) +
                           " vertices moved, " + std::to_string(run.rounding.flips) + " flips, " +
                           std::to_string(run.rounding.collapses) + " collapses, largest change " +
-                          g3(run.rounding.largest_change) + (r.rounding_failed ? " (did not converge)" : ""));
+                          measure_text(run.rounding.largest_change) + (r.rounding_failed ? " (did not converge)" : ""));
     if (!run.certified || !delivered) return;
     ++certified_runs_;
     const double rel = r.relative_volume_error;
@@ -198,8 +196,9 @@ class Boolean_experiment {
       else rounded_crossings_.push_back(c.name + " under " + kernel + ": " + std::to_string(r.crossings) +
                                         " crossing face pairs after rounding");
     } else {
-      rep_.failures.push_back(c.name + " under " + kernel + ": certified result " +
-                              (r.valid_exact ? "off the oracle's volume by " + g3(rel) : std::string("not valid")));
+      rep_.failures.push_back(
+          c.name + " under " + kernel + ": certified result " +
+          (r.valid_exact ? "off the oracle's volume by " + measure_text(rel) : std::string("not valid")));
     }
   }
 
@@ -210,9 +209,11 @@ class Boolean_experiment {
                     std::to_string(run.mesh.faces.size()), yes_no(r.solid), yes_no(r.manifold),
                     run.ok() ? std::to_string(r.crossings) : "-",
                     run.exact_self_intersecting_pairs ? std::to_string(*run.exact_self_intersecting_pairs) : "-",
-                    run.ok() ? g3(run.validation.volume.value) : "-", !run.ok() ? "-" : std::isnan(rel) ? "no oracle" : g3(rel),
-                    std::to_string(run.mesh.tags.creases().size()),
-                    format_fixed(run.time.total(), 4)});
+                    run.ok() ? measure_text(run.validation.volume.value) : "-",
+                    !run.ok()         ? "-"
+                    : std::isnan(rel) ? "no oracle"
+                                      : measure_text(rel),
+                    std::to_string(run.mesh.tags.creases().size()), format_fixed(run.time.total(), 4)});
   }
 
   void add_picture(const Boolean_case& c, const Boolean_run& run) {

@@ -22,8 +22,6 @@ namespace {
 
 using io::Json;
 
-std::string g3(double v) { return measure_text(v, 3); }
-
 /// The section's runs: every input under naive sewing and the Whitney
 /// joiner, into one table, the run records, the pictures and the flip counts.
 class Joining_experiment {
@@ -63,9 +61,10 @@ class Joining_experiment {
     const double abs_after = largest(j, [](const auto& f) { return f.after.absolute; });
     const double nve_before = largest(j, [](const auto& f) { return f.before.normal_vector; });
     const double nve_after = largest(j, [](const auto& f) { return f.after.normal_vector; });
-    table_.add_row({in.name, method, std::to_string(j.vertices), std::to_string(j.triangles), g3(abs_before),
-                    g3(abs_after), g3(nve_before), g3(nve_after), std::to_string(flips),
-                    std::to_string(total(j, [](const auto& f) { return f.overlaps_after; })), j.watertight_seams ? "closed" : "open",
+    table_.add_row({in.name, method, std::to_string(j.vertices), std::to_string(j.triangles), measure_text(abs_before),
+                    measure_text(abs_after), measure_text(nve_before), measure_text(nve_after), std::to_string(flips),
+                    std::to_string(total(j, [](const auto& f) { return f.overlaps_after; })),
+                    j.watertight_seams ? "closed" : "open",
                     r.status + (r.failure.empty() ? "" : " (" + r.failure + ")"), duration_text(j.total_seconds)});
     const auto svg = add_pictures(in, method, stem, r, flips);
     Json run = r.json;

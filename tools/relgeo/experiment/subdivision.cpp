@@ -70,8 +70,6 @@ Mesh_double creased_box() {
 
 using io::Json;
 
-std::string g3(double v) { return measure_text(v, 3); }
-
 // The limit mesh coloured by the width of the tangent-plane bound per face
 // (log scale; the range goes to the section's JSON).
 io::Image bounds_picture(const Subdivision_result& r, Section_report& rep, const std::string& name) {
@@ -174,8 +172,9 @@ class Subdivision_experiment {
         rep_.failures.push_back(name + " L" + std::to_string(level) + " " + kernel + ": " +
                                 std::to_string(b.samples_outside) + " samples outside the " + b.method + " bound");
     }
-    table_.add_row({name, std::to_string(level), kernel, std::to_string(r.refined.faces.size()), g3(r.refined_distance),
-                    g3(r.limit_distance), g3(r.limit_normal_offset), g3(r.rounding), tight[0], tight[1], tight[2],
+    table_.add_row({name, std::to_string(level), kernel, std::to_string(r.refined.faces.size()),
+                    measure_text(r.refined_distance), measure_text(r.limit_distance),
+                    measure_text(r.limit_normal_offset), measure_text(r.rounding), tight[0], tight[1], tight[2],
                     tight[3], std::to_string(outside), format_fixed(r.time_subdivision + r.time_bounds, 3)});
     rows_.push_back(run_json(name, level, kernel, r, jb));
   }
@@ -223,7 +222,7 @@ class Subdivision_experiment {
                       std::to_string(outside_total_));
     if (icosahedron_l2_limit_ >= 0)
       rep_.add_headline("Icosahedron, level-2 limit mesh (double): largest distance to the exact limit surface",
-                        g3(icosahedron_l2_limit_));
+                        measure_text(icosahedron_l2_limit_));
     return std::move(rep_);
   }
 

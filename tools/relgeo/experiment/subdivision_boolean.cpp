@@ -65,7 +65,7 @@ std::vector<Solid_pair_case> solid_pair_cases() {
   };
 }
 
-std::string g3(double v) { return std::isnan(v) ? "-" : measure_text(v, 3); }
+std::string measure_or_dash(double v) { return std::isnan(v) ? "-" : measure_text(v, 3); }
 std::string ms(double seconds) { return format_fixed(1e3 * seconds, 2); }
 
 // Level 0: the Boolean of the control meshes themselves.
@@ -145,7 +145,8 @@ class Subdivision_boolean_experiment {
       if (level == 1) first = d;
       last = d;
     }
-    decay_.push_back(c.name + " " + kernel + ": " + g3(first) + " -> " + g3(last) + " (x" + g3(first / last) + ")");
+    decay_.push_back(c.name + " " + kernel + ": " + measure_or_dash(first) + " -> " + measure_or_dash(last) + " (x" +
+                     measure_or_dash(first / last) + ")");
     table_.add_rule();
   }
 
@@ -169,10 +170,12 @@ class Subdivision_boolean_experiment {
     if (run.certified && run.ok()) check_certified(c, kernel, level, run, d, df, ratio);
     table_.add_row({c.name, std::to_string(level), kernel, status.substr(0, 40),
                     run.ok() ? std::to_string(run.control.faces.size()) : "-",
-                    run.ok() ? std::to_string(run.counts.curve_edges) : "-", g3(d), g3(df),
-                    !run.ok() ? "-" : run.fitted ? "fitted" : "unfitted", g3(ratio),
-                    run.ok() ? run.validation.summary() : "-", ms(run.time.total()), ms(run.time.layer()),
-                    ms(run.time.boolean)});
+                    run.ok() ? std::to_string(run.counts.curve_edges) : "-", measure_or_dash(d), measure_or_dash(df),
+                    !run.ok()    ? "-"
+                    : run.fitted ? "fitted"
+                                 : "unfitted",
+                    measure_or_dash(ratio), run.ok() ? run.validation.summary() : "-", ms(run.time.total()),
+                    ms(run.time.layer()), ms(run.time.boolean)});
     rows_.push_back(level_json(c, level, kernel, run, status, ratio));
     if (kernel == "filtered" && run.ok()) add_picture(c, level, run);
     return d;
@@ -187,7 +190,7 @@ class Subdivision_boolean_experiment {
     if (run.validation.has_no_defect()) ++certified_clean_;
     else rep_.failures.push_back(where + "certified result with a defect: " + run.validation.summary());
     if (ratio < min_decay)
-      rep_.failures.push_back(where + "the distance fell only x" + g3(ratio) + " from the previous level");
+      rep_.failures.push_back(where + "the distance fell only x" + measure_or_dash(ratio) + " from the previous level");
     if (run.fitted && !(df <= d)) rep_.failures.push_back(where + "kept the fitted mesh though it is farther");
   }
 

@@ -153,11 +153,9 @@ run_sanitized_tests() {
     rm -rf "$dir/CMakeCache.txt" "$dir/CMakeFiles"
   fi
   # -O1 and line tables only: the sanitizers' usual setting, and half the
-  # compile time of -O2 -g on the Boolean suites. One object per source
-  # (RELGEO_UNITY_BUILD=OFF): the unity build is measured on the Release
-  # build only so far.
+  # compile time of -O2 -g on the Boolean suites.
   configure "$dir" -DCMAKE_CXX_COMPILER=clang++ -DRELGEO_SANITIZE=ON -DRELGEO_BUILD_BENCHMARKS=OFF \
-    -DRELGEO_BUILD_TOOLS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRELGEO_UNITY_BUILD=OFF \
+    -DRELGEO_BUILD_TOOLS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG"
   cmake --build "$dir" -j "$jobs" --target relgeo_sanitized_suites
   local suites=()

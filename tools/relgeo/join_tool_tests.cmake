@@ -107,8 +107,8 @@ relgeo_tool_test(experiment_quick_joining 0
   JSON_FILES ${_tmp}/results_joining/joining.json)
 
 # run_join_with (commands/join/run_with.h), the body of `relgeo join`, from
-# files to files under the kernels directly: GoogleTest, relgeo_add_test of
-# test/CMakeLists.txt (include folder: this one).
+# files to files under the kernels directly: GoogleTest, relgeo_add_test
+# (cmake/relgeoAddTest.cmake; include folder: this one).
 find_package(GTest REQUIRED)
 set(_join_test_libs relgeo::cgal relgeo::eigen relgeo::io relgeo_joining_fixtures relgeo_tool_occt_loader)
 if(TARGET relgeo::occt)

@@ -45,6 +45,7 @@
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/kernel/filtered_exact_kernel.h"
 #include "relgeo/mesh/face_bvh.h"
+#include "relgeo/mesh/internal/diagonal_separation.h"
 #include "relgeo/mesh/internal/embedded_stars.h"
 #include "relgeo/mesh/internal/face_pair_predicates.h"
 #include "relgeo/mesh/rounding_repair_report.h"
@@ -236,11 +237,12 @@ class Rounding_repair {
   // Adds the defects of the faces `of` (sorted; in(f): f is one of them):
   // each degenerate one, and each pair of one of them and a live face that
   // meet. Pairs sharing a vertex flagged in `embedded` are left out (that
-  // certificate decides them). Pairs of two of them from their hierarchy's
-  // own descent, each pair once; the other live faces a block at a time (no
-  // box per face of the whole mesh at once), each block's boxes searched in
-  // that hierarchy. Two earlier searches were slower: every live face's box
-  // searched (each pair of two of them met twice: the elephant's union 5.0
+  // certificate decides them), and so are pairs that a diagonal direction
+  // separates (internal/diagonal_separation.h; the extents of the faces of
+  // `of` first, of a block's faces when first met, from the mesh as it is
+  // now). Pairs of two of them from their hierarchy's own descent, each pair once; the other live faces a block at a
+  // time (no box per face of the whole mesh at once), each block's boxes searched in that hierarchy. Two earlier
+  // searches were slower: every live face's box searched (each pair of two of them met twice: the elephant's union 5.0
   // against 3.5 ms for the candidates), and one hierarchy of all live faces
   // descended by groups (no pair of two others). With the latter the
   // rounding phase of the benchmark's unions took longer, even with three
@@ -252,22 +254,29 @@ class Rounding_repair {
     for (Index f : of)
       if (known_degenerate(f)) degenerate_faces.push_back(f);
     std::vector<Box_3> of_boxes;
-    for (Index f : of) of_boxes.push_back(box(f));
+    std::vector<Diagonal_extents> of_extents;
+    for (Index f : of) of_boxes.push_back(box(f)), of_extents.push_back(diagonal_extents(m_.vertices, m_.faces[f]));
     const Face_bvh hierarchy(of_boxes);
     hierarchy.for_each_overlapping_pair([&](Index i, Index j) {
       const Index f = of[i], g = of[j];
+      if (diagonally_separated(of_extents[i], of_extents[j])) return;
       if (defect(f, g, embedded)) pairs.push_back({std::min(f, g), std::max(f, g)});
     });
     const Index n = static_cast<Index>(m_.faces.size());
     constexpr Index block = 4096;
     std::vector<Index> faces;
     std::vector<Box_3> boxes;
+    std::vector<Diagonal_extents> block_extents(block);
+    std::vector<unsigned char> known(block);
     for (Index begin = 0; begin < n; begin += block) {
       faces.clear(), boxes.clear();
+      std::fill(known.begin(), known.end(), 0);
       for (Index f = begin; f < std::min(n, begin + block); ++f)
         if (!removed_[f] && !in(f)) faces.push_back(f), boxes.push_back(box(f));
       for (const auto& [j, i] : hierarchy.overlapping_pairs_with_boxes(boxes)) {
         const Index f = faces[j], g = of[i];
+        if (!known[j]) block_extents[j] = diagonal_extents(m_.vertices, m_.faces[f]), known[j] = 1;
+        if (diagonally_separated(block_extents[j], of_extents[i])) continue;
         if (defect(f, g, embedded)) pairs.push_back({std::min(f, g), std::max(f, g)});
       }
     }

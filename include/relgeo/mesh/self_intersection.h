@@ -42,6 +42,7 @@
 #include "relgeo/kernel/kernel_for_number.h"
 #include "relgeo/kernel/point_access.h"
 #include "relgeo/mesh/face_bvh.h"
+#include "relgeo/mesh/internal/diagonal_separation.h"
 #include "relgeo/mesh/internal/embedded_stars.h"
 #include "relgeo/mesh/internal/face_pair_predicates.h"
 #include "relgeo/mesh/internal/kernel_points.h"
@@ -174,10 +175,25 @@ void find_self_intersections(const K& k, const Triangle_mesh<P>& m, const Points
   const Face_bvh open_bvh(std::span<const Box_3>(open_boxes), Face_bvh_options{.threads = threads});
   std::vector<Box_3>().swap(open_boxes);  // the hierarchy holds its copy
 
+  // Each open face's diagonal extents (internal/diagonal_separation.h), and
+  // a certified face's when its box first meets an open one: pairs they
+  // separate need no test. Only where the kernel's points are doubles.
+  constexpr bool doubles = std::is_same_v<std::remove_cvref_t<decltype(point[Index{0}])>, Point_3<double>>;
+  std::vector<Diagonal_extents> open_extents(doubles ? open.size() : 0);
+  if constexpr (doubles)
+    parallel_for_each_index((open.size() + 1023) / 1024, threads, [&](std::size_t c) {
+      for (std::size_t i = c * 1024; i < std::min(open.size(), (c + 1) * 1024); ++i)
+        open_extents[i] = diagonal_extents(point, faces[open[i]]);
+    });
+
   std::size_t open_pairs = 0;
   std::vector<Self_intersection_hit> hits = open_bvh.collect_overlapping_pairs<Self_intersection_hit>(
-      [&](Index i, Index j, std::vector<Self_intersection_hit>& found) { test(open[i], open[j], found); }, threads,
-      &open_pairs);
+      [&](Index i, Index j, std::vector<Self_intersection_hit>& found) {
+        if constexpr (doubles)
+          if (diagonally_separated(open_extents[i], open_extents[j])) return;
+        test(open[i], open[j], found);
+      },
+      threads, &open_pairs);
   // The certified faces' queries and the cross pairs, in fixed chunks: the
   // same hits whatever the thread count.
   const std::vector<Face_pair>& cross = certified.cross_pairs;
@@ -190,8 +206,13 @@ void find_self_intersections(const K& k, const Triangle_mesh<P>& m, const Points
     if (c < query_chunks) {
       for (Index f = static_cast<Index>(c * chunk); f < std::min(faces.size(), (c + 1) * chunk); ++f) {
         if (!group[f]) continue;
+        std::optional<Diagonal_extents> f_extents;
         open_bvh.for_each_face_in_box(face_box(m, faces[f]), [&](Index i) {
           ++queried_pairs[c];
+          if constexpr (doubles) {
+            if (!f_extents) f_extents = diagonal_extents(point, faces[f]);
+            if (diagonally_separated(*f_extents, open_extents[i])) return;
+          }
           test(std::min(f, open[i]), std::max(f, open[i]), parts[c]);
         });
       }

@@ -2,6 +2,8 @@
 // (internal/expansion_orientation_3.h) against the GMP stage
 // (internal/exact_dyadic.h): over its whole range, at the range's edges and
 // outside it; every case in range is decided, by each of its three steps.
+#include "relgeo/kernel/internal/expansion_orientation_3.h"
+
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
@@ -9,12 +11,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <random>
 
 #include "relgeo/analysis/predicate_workloads.h"
 #include "relgeo/core/dyadic.h"
 #include "relgeo/kernel/internal/exact_dyadic.h"
-#include "relgeo/kernel/internal/expansion_orientation_3.h"
 
 namespace relgeo::internal {
 namespace {
@@ -147,6 +149,46 @@ TEST(ExpansionOrientation3, MixedMagnitudesZerosAndEdges) {
     expect_agreement(c, steps);
   }
   EXPECT_EQ(steps.decided, static_cast<std::size_t>(n));
+}
+
+// The determinant itself, in rationals.
+mpq_class exact_determinant(const Coplanar_case& c) {
+  std::array<std::array<mpq_class, 3>, 3> a;  // a[row][column] = (q, r, s)[column] - p, coordinate `row`
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 3; ++col) a[row][col] = mpq_class(c[3 * (col + 1) + row]) - mpq_class(c[row]);
+  return a[0][0] * (a[1][1] * a[2][2] - a[2][1] * a[1][2]) - a[1][0] * (a[0][1] * a[2][2] - a[2][1] * a[0][2]) +
+         a[2][0] * (a[0][1] * a[1][2] - a[1][1] * a[0][2]);
+}
+
+// orientation_3_enclosure holds D on every kind of case above, and is a few
+// ulps of D wide where D is not small against its terms (uniform points).
+TEST(ExpansionOrientation3, TheEnclosureHoldsTheDeterminantAndIsNarrowWhereWellConditioned) {
+  std::mt19937_64 g(31);
+  std::size_t wide = 0, uniform_cases = 0;
+  for (int scale = -240; scale <= 290; scale += 10) {
+    for (int i = 0; i < 200; ++i) {
+      Coplanar_case c;
+      const bool well_conditioned = i % 4 == 0;
+      if (well_conditioned)
+        for (double& v : c) v = std::ldexp(uniform(g), scale);
+      else
+        c = i % 4 == 1 ? exactly_coplanar(g, scale) : near_coplanar(g, scale, 4 * (i % 4));
+      if (!in_range(c)) continue;
+      const std::optional<Interval> e = orientation_3_enclosure(c);
+      ASSERT_TRUE(e.has_value());
+      const mpq_class d = exact_determinant(c);
+      ASSERT_TRUE(mpq_class(e->inf()) <= d && d <= mpq_class(e->sup()))
+          << std::hexfloat << c[0] << ' ' << c[1] << ' ' << c[2] << ' ' << c[9] << ' ' << c[10] << ' ' << c[11];
+      if (well_conditioned) {
+        ++uniform_cases;
+        wide += e->sup() - e->inf() > 0x1p-50 * std::abs(d.get_d());
+      }
+    }
+  }
+  EXPECT_GT(uniform_cases, 2000u);
+  EXPECT_LT(wide * 100, uniform_cases);  // at most 1% wider than 8 ulps of D
+  Coplanar_case outside{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0x1p301};
+  EXPECT_FALSE(orientation_3_enclosure(outside).has_value());
 }
 
 TEST(ExpansionOrientation3, RefusesOutsideItsRange) {

@@ -68,6 +68,7 @@
 
 #include "relgeo/core/certified_sign.h"
 #include "relgeo/core/internal/error_free.h"
+#include "relgeo/core/interval.h"
 #include "relgeo/kernel/internal/expansion.h"
 
 namespace relgeo::internal {
@@ -110,28 +111,37 @@ enum class Expansion_step { compensated, exact_rounded_differences, exact };
   return ((n01 * e(2, 2) - n02 * e(1, 2)) + n12 * e(0, 2)).sign();
 }
 
-/// The exact sign of orientation_3 of (p, q, r, s) given as
-/// px py pz qx qy qz rx ry rz sx sy sz, and the step that decided it;
+/// Step 1 and what step 2 needs: the split entries d[row][column], whether
+/// every error is 0, the compensated estimate E of D and the bound
+/// fl(c P^), so that |D - E| <= u |E| + bound (see above).
+struct Compensated_orientation_3 {
+  std::array<std::array<Two_terms, 3>, 3> entries;
+  bool exact_differences = true;
+  double estimate = 0, bound = 0;
+  /// The sign of E is D's.
+  bool decides() const { return std::abs(estimate) > bound; }
+};
+
+/// Step 1 on (p, q, r, s) given as px py pz qx qy qz rx ry rz sx sy sz;
 /// nullopt when a coordinate is outside Expansion_orientation_3_range (or
 /// NaN or infinite).
-inline std::optional<std::pair<Certified_sign, Expansion_step>> expansion_orientation_3_with_step(
-    const std::array<double, 12>& c) {
+inline std::optional<Compensated_orientation_3> compensated_orientation_3(const std::array<double, 12>& c) {
   bool in_range = true;
   for (double v : c) in_range &= Expansion_orientation_3_range::contains(v);
   if (!in_range) return std::nullopt;
 
   // Entries a[row][column], row = coordinate, column = q, r, s minus p.
-  std::array<std::array<Two_terms, 3>, 3> d;
-  bool exact_differences = true;
+  Compensated_orientation_3 result;
+  auto& d = result.entries;
   for (int row = 0; row < 3; ++row)
     for (int col = 0; col < 3; ++col) {
       d[row][col] = two_diff(c[3 * (col + 1) + row], c[row]);
-      exact_differences &= d[row][col].error == 0;
+      result.exact_differences &= d[row][col].error == 0;
     }
   const auto a = [&](int row, int col) { return d[row][col].value; };
   const auto t = [&](int row, int col) { return d[row][col].error; };
 
-  // Step 1. Each monomial sign * c x y as H + L + fl(c l) (see above).
+  // Each monomial sign * c x y as H + L + fl(c l) (see above).
   std::array<double, Expansion_orientation_3_constants::terms> terms;
   std::size_t n = 1;  // terms[0] is T1c
   const auto add_monomial = [&](double sign, double c3, double x, double y) {
@@ -162,17 +172,39 @@ inline std::optional<std::pair<Certified_sign, Expansion_step>> expansion_orient
     sum = s.value;
     errors += s.error;
   }
-  const double estimate = sum + errors;
+  result.estimate = sum + errors;
   const auto abs_minor = [&](int r1, int r2) {  // |a(r1,0) a(r2,1)| + |a(r2,0) a(r1,1)|
     return std::abs(a(r1, 0)) * std::abs(a(r2, 1)) + std::abs(a(r2, 0)) * std::abs(a(r1, 1));
   };
   const double permanent = (std::abs(a(2, 2)) * abs_minor(0, 1) + std::abs(a(1, 2)) * abs_minor(0, 2)) +
                            std::abs(a(0, 2)) * abs_minor(1, 2);
-  if (std::abs(estimate) > Expansion_orientation_3_constants::c * permanent) [[likely]]
-    return std::pair{estimate > 0 ? Certified_sign::positive : Certified_sign::negative, Expansion_step::compensated};
-  return std::pair{exact_orientation_3_in_expansions(d, exact_differences), exact_differences
-                                                                                ? Expansion_step::exact_rounded_differences
-                                                                                : Expansion_step::exact};
+  result.bound = Expansion_orientation_3_constants::c * permanent;
+  return result;
+}
+
+/// The exact sign of orientation_3 of (p, q, r, s) (coordinates as above),
+/// and the step that decided it; nullopt outside the range.
+inline std::optional<std::pair<Certified_sign, Expansion_step>> expansion_orientation_3_with_step(
+    const std::array<double, 12>& c) {
+  const std::optional<Compensated_orientation_3> s = compensated_orientation_3(c);
+  if (!s) return std::nullopt;
+  if (s->decides()) [[likely]]
+    return std::pair{s->estimate > 0 ? Certified_sign::positive : Certified_sign::negative,
+                     Expansion_step::compensated};
+  return std::pair{exact_orientation_3_in_expansions(s->entries, s->exact_differences),
+                   s->exact_differences ? Expansion_step::exact_rounded_differences : Expansion_step::exact};
+}
+
+/// An interval holding the orientation_3 determinant D itself (not only its
+/// sign), from step 1: |D - E| <= u |E| + fl(c P^), a few units in the last
+/// place of D wide unless D is tiny against P (near-coplanar points; u |E|
+/// is exact: E is 0 or at least 2^-906); nullopt outside the range.
+inline std::optional<Interval> orientation_3_enclosure(const std::array<double, 12>& c) {
+  const std::optional<Compensated_orientation_3> s = compensated_orientation_3(c);
+  if (!s) return std::nullopt;
+  const double radius =
+      (Interval(Expansion_orientation_3_constants::u * std::abs(s->estimate)) + Interval(s->bound)).sup();
+  return Interval(s->estimate) + Interval(-radius, radius);
 }
 
 /// The exact sign of orientation_3 (coordinates as above) in the range of

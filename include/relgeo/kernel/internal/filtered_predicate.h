@@ -67,19 +67,19 @@ class Scaled_integers {
       if (b.mantissa != 0) emin_ = std::min(emin_, b.exponent);
     }
   }
-  /// q times the inverse of the scaling (for values of degree 1 in the inputs).
-  void unscale(mpq_class& q) const {
-    if (emin_ == INT_MAX) return;  // every input 0
-    if (emin_ > 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(emin_));
-    else if (emin_ < 0) mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-emin_));
+  /// z = v 2^-emin, an integer (into z's storage: no allocation once it is large enough).
+  void set(mpz_ptr z, double v) const {
+    const Binary_parts b = binary_parts(v);
+    set_mpz(z, b.mantissa);
+    if (b.mantissa != 0) mpz_mul_2exp(z, z, static_cast<mp_bitcnt_t>(b.exponent - emin_));
   }
   mpz_class operator()(double v) const {
-    const Binary_parts b = binary_parts(v);
     mpz_class z;
-    set_mpz(z.get_mpz_t(), b.mantissa);
-    if (b.mantissa != 0) mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), static_cast<mp_bitcnt_t>(b.exponent - emin_));
+    set(z.get_mpz_t(), v);
     return z;
   }
+  /// The scaling's exponent: each input is its integer times 2^emin (INT_MAX when every input is 0).
+  int emin() const { return emin_; }
 
  private:
   int emin_ = INT_MAX;

@@ -27,6 +27,7 @@
 #include "relgeo/core/interval.h"
 #include "relgeo/core/number_traits.h"
 #include "relgeo/kernel/implicit_point.h"
+#include "relgeo/kernel/internal/exact_implicit_coordinates.h"
 #include "relgeo/kernel/internal/expansion_orientation_3.h"
 #include "relgeo/kernel/internal/filtered_predicate.h"
 #include "relgeo/kernel/internal/implicit_enclosed.h"
@@ -288,17 +289,14 @@ struct Staged_implicit_policy {
   }
   /// The exact rational coordinates (GMP; the filters are not used).
   static std::array<mpq_class, 3> exact_coordinates(const Point& a) {
-    if (a.kind == Implicit_point_kind::explicit_point)
-      return {exact_rational(a.filter.x.value), exact_rational(a.filter.y.value), exact_rational(a.filter.z.value)};
-    const Scaled_integers to_integer(Defining_doubles<1>(std::array<const Point*, 1>{&a}).values());
-    const Homogeneous_3<mpz_class> h = homogeneous_coordinates<mpz_class>(a, to_integer);
-    std::array<mpq_class, 3> c;
-    for (int axis = 0; axis < 3; ++axis) {
-      c[axis] = mpq_class(h[axis], h.w);
-      c[axis].canonicalize();
-      to_integer.unscale(c[axis]);  // X / W scales like a coordinate: undo the scaling of the inputs
+    switch (a.kind) {
+      case Implicit_point_kind::explicit_point:
+        return {exact_rational(a.filter.x.value), exact_rational(a.filter.y.value), exact_rational(a.filter.z.value)};
+      case Implicit_point_kind::lpi:
+        return Exact_implicit_coordinates::lpi(std::span<const Point_3<double>, 5>(a.defining->data(), 5));
+      default:
+        return Exact_implicit_coordinates::tpi(*a.defining);
     }
-    return c;
   }
 
   /// Doubles within a few ulps: from the filter when its enclosure is within

@@ -68,8 +68,8 @@ namespace {
 
 TEST(BinaryParts, EveryDoubleIsItsMantissaTimesItsPowerOfTwo) {
   // Across the whole range, subnormals included, mantissas of 53 bits (wider
-  // than a 32-bit long: the GMP stage loads them with mpz_import, not
-  // mpz_set_si) — checked against GMP's own conversion.
+  // than a 32-bit long: there set_mpz loads them with mpz_import, with a
+  // 64-bit long through mpz_set_si) — checked against GMP's own conversion.
   std::mt19937_64 g(53);
   for (int i = 0; i < 100000; ++i) {
     const int e = static_cast<int>(g() % 2098) - 1074;
@@ -95,6 +95,11 @@ TEST(BinaryParts, EveryDoubleIsItsMantissaTimesItsPowerOfTwo) {
   mpz_class big;
   set_mpz(big.get_mpz_t(), -(std::int64_t{1} << 52) - 12345);
   EXPECT_EQ(big, mpz_class("-4503599627382841"));
+  // The ends of int64_t, whichever path loads them.
+  set_mpz(big.get_mpz_t(), std::numeric_limits<std::int64_t>::min());
+  EXPECT_EQ(big, mpz_class("-9223372036854775808"));
+  set_mpz(big.get_mpz_t(), std::numeric_limits<std::int64_t>::max());
+  EXPECT_EQ(big, mpz_class("9223372036854775807"));
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "relgeo/core/errors.h"
 #include "relgeo/core/dyadic.h"
@@ -96,8 +97,8 @@ class Exact_kernel : public internal::Kernel_base<Exact_kernel, mpq_class>,
   /// incomplete here.
   template <class D = Double_point_kernel>
   static Implicit_point_3 from_double_point_kernel(const typename D::Implicit_point_3& p) {
-    const std::array<mpq_class, 3> c = D::exact_coordinates(p);
-    return {Point_3{c[0], c[1], c[2]}, p.kind};
+    std::array<mpq_class, 3> c = D::exact_coordinates(p);
+    return {Point_3{std::move(c[0]), std::move(c[1]), std::move(c[2])}, p.kind};
   }
 
   struct Orientation_2 {

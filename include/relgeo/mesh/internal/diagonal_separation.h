@@ -78,9 +78,9 @@ Diagonal_extents diagonal_extents(const Points& point, const Triangle& t) {
 
 /// True only if the two faces are disjoint (false decides nothing).
 inline bool diagonally_separated(const Diagonal_extents& a, const Diagonal_extents& b) {
-  bool apart = false;
-  for (int k = 0; k < 6; ++k) apart |= (a.hi[k] < b.lo[k]) | (b.hi[k] < a.lo[k]);  // no branch per axis
-  return apart;
+  int apart = 0;  // no branch per axis: bitwise on the comparisons
+  for (int k = 0; k < 6; ++k) apart |= static_cast<int>(a.hi[k] < b.lo[k]) | static_cast<int>(b.hi[k] < a.lo[k]);
+  return apart != 0;
 }
 
 /// The extents of a mesh's faces, each computed when first asked for (one

@@ -26,6 +26,7 @@
 
 #include "relgeo/core/errors.h"
 #include "relgeo/kernel/internal/filtered_predicate.h"
+#include "relgeo/kernel/internal/implicit_coordinates.h"
 #include "relgeo/kernel/point.h"
 
 namespace relgeo::internal {
@@ -34,7 +35,10 @@ class Exact_implicit_coordinates {
  public:
   /// The point where the line through v[0], v[1] crosses the plane through
   /// v[2], v[3], v[4]. \pre finite inputs; \throws Precondition_violation
-  /// when the line is parallel to the plane (W = 0: no such point).
+  /// when the line is parallel to the plane (W = 0: no such point). The
+  /// formula of lpi_coordinates (implicit_coordinates.h), each step into
+  /// the workspace: with mpz_class expressions its temporaries took a
+  /// third of the time.
   static std::array<mpq_class, 3> lpi(std::span<const Point_3<double>, 5> v) {
     Workspace& s = workspace();
     const int emin = s.scale(v);
@@ -63,52 +67,39 @@ class Exact_implicit_coordinates {
 
   /// The point common to the planes through v[3i], v[3i+1], v[3i+2], i = 0,
   /// 1, 2. \pre finite inputs; \throws Precondition_violation when the
-  /// planes meet in no single point (W = 0).
+  /// planes meet in no single point (W = 0). Rare in the Booleans: the
+  /// formula of implicit_coordinates.h as it stands, three full gcds.
   static std::array<mpq_class, 3> tpi(std::span<const Point_3<double>, 9> v) {
-    Workspace& s = workspace();
-    const int emin = s.scale(v);
-    for (int i = 0; i < 3; ++i) {
-      for (int k = 0; k < 3; ++k) {
-        mpz_sub(s.u[k].get_mpz_t(), s.in(3 * i + 1, k), s.in(3 * i, k));
-        mpz_sub(s.v[k].get_mpz_t(), s.in(3 * i + 2, k), s.in(3 * i, k));
-      }
-      cross(&s.n[3 * i], s.u.data(), s.v.data());
-      dot(s.d[i], &s.n[3 * i], &s.in_point(3 * i));
-    }
-    // c23 = n1 x n2, c31 = n2 x n0, c12 = n0 x n1 (in n's numbering from 0).
-    cross(&s.c[0], &s.n[3], &s.n[6]);
-    cross(&s.c[3], &s.n[6], &s.n[0]);
-    cross(&s.c[6], &s.n[0], &s.n[3]);
-    dot(s.w, &s.n[0], &s.c[0]);
-    if (sgn(s.w) == 0) throw Precondition_violation("exact TPI coordinates: the planes meet in no single point");
+    std::array<double, 27> values;
+    for (std::size_t i = 0; i < 9; ++i) values[3 * i] = v[i].x, values[3 * i + 1] = v[i].y, values[3 * i + 2] = v[i].z;
+    const Scaled_integers to_integer(values);
+    std::array<Point_3<mpz_class>, 9> p;
+    for (std::size_t i = 0; i < 9; ++i) p[i] = {to_integer(v[i].x), to_integer(v[i].y), to_integer(v[i].z)};
+    const Homogeneous_3<mpz_class> h = tpi_coordinates(p);
+    if (sgn(h.w) == 0) throw Precondition_violation("exact TPI coordinates: the planes meet in no single point");
     std::array<mpq_class, 3> c;
+    mpz_class g;
     for (int k = 0; k < 3; ++k) {
-      mpz_mul(s.x[k].get_mpz_t(), s.d[0].get_mpz_t(), s.c[k].get_mpz_t());
-      mpz_addmul(s.x[k].get_mpz_t(), s.d[1].get_mpz_t(), s.c[3 + k].get_mpz_t());
-      mpz_addmul(s.x[k].get_mpz_t(), s.d[2].get_mpz_t(), s.c[6 + k].get_mpz_t());
-      mpz_gcd(s.g.get_mpz_t(), s.x[k].get_mpz_t(), s.w.get_mpz_t());
-      set_reduced(c[k], s.x[k], s.w, s.g, emin);
+      mpz_gcd(g.get_mpz_t(), h[k].get_mpz_t(), h.w.get_mpz_t());
+      set_reduced(c[k], h[k], h.w, g, to_integer.emin());
     }
     return c;
   }
 
  private:
-  // The integers of one conversion; `inputs` holds the scaled coordinates,
-  // three per defining point.
+  // The integers of one LPI conversion; `inputs` holds the scaled
+  // coordinates, three per defining point.
   struct Workspace {
-    std::array<mpz_class, 27> inputs;
-    std::array<mpz_class, 3> u, v, a, d, x;
-    std::array<mpz_class, 9> n, c;
+    std::array<mpz_class, 15> inputs;
+    std::array<mpz_class, 3> u, v, a, d, n, x;
     mpz_class w, lambda, g, g_lambda, w_reduced;
 
     mpz_srcptr in(int point, int axis) const { return inputs[3 * point + axis].get_mpz_t(); }
-    const mpz_class& in_point(int point) const { return inputs[3 * point]; }
     // inputs = the points' coordinates as integers scaled by 2^-emin;
     // returns emin (INT_MAX when all are 0).
-    template <std::size_t N>
-    int scale(std::span<const Point_3<double>, N> points) {
-      std::array<double, 3 * N> values;
-      for (std::size_t i = 0; i < N; ++i)
+    int scale(std::span<const Point_3<double>, 5> points) {
+      std::array<double, 15> values;
+      for (std::size_t i = 0; i < 5; ++i)
         values[3 * i] = points[i].x, values[3 * i + 1] = points[i].y, values[3 * i + 2] = points[i].z;
       const Scaled_integers to_integer(values);
       for (std::size_t k = 0; k < values.size(); ++k) to_integer.set(inputs[k].get_mpz_t(), values[k]);

@@ -4,10 +4,10 @@
 // converts every new vertex this way).
 //
 // The inputs are scaled by one power of two to integers, the homogeneous
-// coordinates of implicit_coordinates.h formed in GMP integers that each
-// thread keeps between calls (no allocation once they have grown), and
-// each X / W reduced. The reduction is most of the cost: a gcd of two
-// 200-bit numbers takes GMP about 1.3 us. For an LPI point
+// coordinates of implicit_coordinates.h formed (an LPI point's in GMP
+// integers that each thread keeps between calls: no allocation once they
+// have grown), and each X / W reduced. The reduction is most of the cost: a
+// gcd of two 200-bit numbers takes GMP about 1.3 us. For an LPI point
 // X = W p + lambda a, so
 //   gcd(X, W) = gcd(lambda a, W) = g gcd(a, W / g),  g = gcd(lambda, W)
 // (lambda / g and W / g are coprime): one gcd of full size and three

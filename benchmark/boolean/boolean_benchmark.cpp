@@ -14,8 +14,13 @@
 // peak memory above the operands. A second table gives relgeo's phase times
 // (Boolean_timing) in its fastest run.
 //
+// The first table also gives the minor page faults of that fastest run.
+//
 // Flags (besides Google Benchmark's): --relgeo_large (also run Epeck and the
-// exact kernel on the 10^6 pair), --relgeo_memory=false, --relgeo_repetitions=N.
+// exact kernel on the 10^6 pair), --relgeo_memory=false, --relgeo_repetitions=N,
+// --relgeo_malloc=retain (glibc keeps freed memory mapped, for every subject:
+// the runs then touch no fresh page once warm, so the times leave out what
+// page faults cost on this machine; doc/boolean.md, "Page faults").
 #include <malloc.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -26,6 +31,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -188,6 +194,7 @@ struct Key {
 };
 struct Figure {
   double seconds = 1e300;
+  long faults = -1;  // minor page faults of the fastest run
   Run_outcome outcome;
   std::optional<double> peak_mb;  // absent: not measured (--relgeo_memory=false); negative: the probe failed
 };
@@ -270,11 +277,13 @@ void register_all(int repetitions, bool large, bool memory) {
             state.PauseTiming();
             const auto run = s.prepare(a, b, op);
             state.ResumeTiming();
+            const long faults_before = minor_page_faults();
             const auto t0 = std::chrono::steady_clock::now();
             const Inspect output = run();
             const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            const long faults = minor_page_faults() - faults_before;
             state.PauseTiming();
-            if (t < f.seconds) f.seconds = t, f.outcome = output();
+            if (t < f.seconds) f.seconds = t, f.faults = faults, f.outcome = output();
             state.ResumeTiming();
           }
           if (memory && !f.peak_mb) f.peak_mb = peak_memory_mb(c.name, op, s.name);
@@ -283,8 +292,8 @@ void register_all(int repetitions, bool large, bool memory) {
 }
 
 void print_table() {
-  std::printf("\n%-18s %-13s %-36s %10s %8s %6s %9s %8s\n", "case", "operation", "subject", "min ms", "ratio", "valid",
-              "faces", "peak MB");
+  std::printf("\n%-18s %-13s %-36s %10s %8s %6s %9s %8s %8s\n", "case", "operation", "subject", "min ms", "ratio",
+              "valid", "faces", "peak MB", "faults");
   for (const auto& [k, f] : figures) {
     std::string peer;
     for (const Subject& s : subjects())
@@ -294,8 +303,8 @@ void print_table() {
     char peak[32] = "-";
     if (f.peak_mb && *f.peak_mb < 0) std::snprintf(peak, sizeof peak, "FAILED");
     else if (f.peak_mb) std::snprintf(peak, sizeof peak, "%.1f", *f.peak_mb);
-    std::printf("%-18s %-13s %-36s %10.1f %8.3f %6s %9zu %8s\n", k.c.c_str(), k.op.c_str(), k.subject.c_str(),
-                1e3 * f.seconds, ratio, f.outcome.valid ? "yes" : "NO", f.outcome.faces, peak);
+    std::printf("%-18s %-13s %-36s %10.1f %8.3f %6s %9zu %8s %8ld\n", k.c.c_str(), k.op.c_str(), k.subject.c_str(),
+                1e3 * f.seconds, ratio, f.outcome.valid ? "yes" : "NO", f.outcome.faces, peak, f.faults);
   }
   // Where relgeo's time went, in its fastest run (Boolean_timing).
   std::printf("\n%-18s %-13s %-36s %7s %7s %7s %7s %7s %7s %7s %7s\n", "case", "operation", "subject (phases, ms)",
@@ -320,9 +329,21 @@ int main(int argc, char** argv) {
   const bool large = args.has("--relgeo_large");
   const bool memory = args.value("--relgeo_memory") != "false";
   const std::string reps = args.value("--relgeo_repetitions");
+  const std::string malloc_mode = args.value("--relgeo_malloc");
   args.erase("--relgeo_large");
   args.erase("--relgeo_memory");
   args.erase("--relgeo_repetitions");
+  args.erase("--relgeo_malloc");
+  if (malloc_mode == "retain") {
+    // The largest mmap threshold glibc takes (blocks below it come from
+    // the heap), and a heap top that is never given back.
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
+    std::printf("glibc malloc keeps freed memory (--relgeo_malloc=retain): no subject pays for page faults once warm\n");
+  } else if (!malloc_mode.empty() && malloc_mode != "default") {
+    std::fprintf(stderr, "--relgeo_malloc takes default or retain, not '%s'\n", malloc_mode.c_str());
+    return 2;
+  }
   if (!args.initialize()) return 2;
   relgeo_bench::register_all(reps.empty() ? 3 : std::stoi(reps), large, memory);
   const std::size_t ran = benchmark::RunSpecifiedBenchmarks();

@@ -31,8 +31,8 @@ FT orientation_2_determinant(const FT& px, const FT& py, const FT& qx, const FT&
 template <class FT>
 struct Orientation_3_minors {
   FT px, py, pz, m01, m02, m12;
-  Orientation_3_minors(const FT& px_, const FT& py_, const FT& pz_, const FT& qx, const FT& qy, const FT& qz,
-                       const FT& rx, const FT& ry, const FT& rz)
+  [[gnu::always_inline]] Orientation_3_minors(const FT& px_, const FT& py_, const FT& pz_, const FT& qx, const FT& qy,
+                                              const FT& qz, const FT& rx, const FT& ry, const FT& rz)
       : px(px_), py(py_), pz(pz_) {
     const FT a00 = qx - px, a01 = rx - px;
     const FT a10 = qy - py, a11 = ry - py;
@@ -41,7 +41,7 @@ struct Orientation_3_minors {
     m02 = FT(a00 * a21) - FT(a20 * a01);
     m12 = FT(a10 * a21) - FT(a20 * a11);
   }
-  FT determinant(const FT& sx, const FT& sy, const FT& sz) const {
+  [[gnu::always_inline]] FT determinant(const FT& sx, const FT& sy, const FT& sz) const {
     const FT a02 = sx - px, a12 = sy - py, a22 = sz - pz;
     const FT t = FT(m01 * a22) - FT(m02 * a12);
     return FT(t + FT(m12 * a02));

@@ -89,7 +89,7 @@ struct Epsilon_test {
 };
 
 template <class T>
-inline Epsilon_test epsilon_test(T det, T bound, bool in_range) {
+[[gnu::always_inline]] inline Epsilon_test epsilon_test(T det, T bound, bool in_range) {
   // & rather than && keeps it branch-free.
   return {sign_of(det), static_cast<bool>(in_range & (std::abs(det) > bound))};
 }
@@ -126,22 +126,24 @@ inline Epsilon_test orientation_2_epsilon_test(T px, T py, T qx, T qy, T rx, T r
 /// The epsilon test of orientation_3(p, q, r, s) in T for several points s
 /// against one plane (p, q, r): what does not depend on s (the minors, the
 /// maxima of q - p and r - p) computed once; the same operations as for one
-/// s, so the same answers.
+/// s, so the same answers. Its parts are always inlined: at -O1 GCC 12 left
+/// some out of line, and a call of the filtered kernel's functor took three
+/// times as long (doc/kernels.md, "A plain loop over the functor").
 template <class T>
 class Orientation_3_plane_epsilon_test {
  public:
-  Orientation_3_plane_epsilon_test(T px, T py, T pz, T qx, T qy, T qz, T rx, T ry, T rz)
+  [[gnu::always_inline]] Orientation_3_plane_epsilon_test(T px, T py, T pz, T qx, T qy, T qz, T rx, T ry, T rz)
       : minors_(px, py, pz, qx, qy, qz, rx, ry, rz),
         mx_(std::max(std::abs(qx - px), std::abs(rx - px))),
         my_(std::max(std::abs(qy - py), std::abs(ry - py))),
         mz_(std::max(std::abs(qz - pz), std::abs(rz - pz))) {}
-  Epsilon_test operator()(T sx, T sy, T sz) const {
+  [[gnu::always_inline]] Epsilon_test operator()(T sx, T sy, T sz) const {
     using C = Orientation_filter_constants<T>;
     const T det = minors_.determinant(sx, sy, sz);
     const T mx = std::max(mx_, std::abs(sx - minors_.px));
     const T my = std::max(my_, std::abs(sy - minors_.py));
     const T mz = std::max(mz_, std::abs(sz - minors_.pz));
-    const T lo = std::min({mx, my, mz}), hi = std::max({mx, my, mz});
+    const T lo = std::min(std::min(mx, my), mz), hi = std::max(std::max(mx, my), mz);
     return epsilon_test(det, C::eps_3 * mx * my * mz, (lo >= C::low_3) & (hi <= C::high_3));
   }
 
@@ -152,8 +154,8 @@ class Orientation_3_plane_epsilon_test {
 
 /// The epsilon test of orientation_3 in T.
 template <class T>
-inline Epsilon_test orientation_3_epsilon_test(T px, T py, T pz, T qx, T qy, T qz, T rx, T ry,
-                                               T rz, T sx, T sy, T sz) {
+[[gnu::always_inline]] inline Epsilon_test orientation_3_epsilon_test(T px, T py, T pz, T qx, T qy, T qz, T rx, T ry,
+                                                                      T rz, T sx, T sy, T sz) {
   return Orientation_3_plane_epsilon_test<T>(px, py, pz, qx, qy, qz, rx, ry, rz)(sx, sy, sz);
 }
 

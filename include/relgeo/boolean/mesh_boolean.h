@@ -53,6 +53,7 @@
 #include "relgeo/core/fp_environment.h"
 #include "relgeo/core/internal/stopwatch.h"
 #include "relgeo/core/internal/union_find.h"
+#include "relgeo/core/rounding.h"
 #include "relgeo/intersection/triangle_intersection.h"
 #include "relgeo/kernel/concepts.h"
 #include "relgeo/kernel/exact_kernel.h"
@@ -412,11 +413,51 @@ class Boolean_engine {
   // by the exact lexicographic order. After the cells, the points compared
   // are distinct, which the kernels' filters decide without exact arithmetic.
   // False when the kernel cannot order two of them (fail-safe, interval).
+  // A certified kernel's points are first put in runs by their
+  // approximations' x ranges (within the stated error of the exact x): two
+  // points of different runs have different x, and the exact order is needed
+  // within a run only, nearly always a single point (on the elephant against
+  // its moved copy, sorting all 1,029 points exactly was 4% of the union).
+  // The approximations are those the retriangulation reads.
   bool merge_equal_points() {
     std::vector<Index> ids;
     for (const auto& l : located_) ids.push_back(find(l.point));
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    if constexpr (K::is_certified) {
+      struct X_range {
+        double lo, hi;
+        Index id;
+      };
+      std::vector<X_range> range(ids.size());
+      for (std::size_t i = 0; i < ids.size(); ++i) {
+        const Approximate_point_3& a = points_.approximation(ids[i]);
+        constexpr double infinity = std::numeric_limits<double>::infinity();
+        range[i] = a.error <= std::numeric_limits<double>::max() && std::isfinite(a.point.x)  // false for NaN
+                       ? X_range{sub_down(a.point.x, a.error), add_up(a.point.x, a.error), ids[i]}
+                       : X_range{-infinity, infinity, ids[i]};
+      }
+      std::sort(range.begin(), range.end(),
+                [](const X_range& a, const X_range& b) { return a.lo < b.lo || (a.lo == b.lo && a.id < b.id); });
+      std::vector<Index> run;
+      for (std::size_t begin = 0; begin < range.size();) {
+        std::size_t end = begin + 1;
+        for (double reach = range[begin].hi; end < range.size() && !(reach < range[end].lo); ++end)
+          reach = std::max(reach, range[end].hi);
+        if (end - begin > 1) {
+          run.clear();
+          for (std::size_t i = begin; i < end; ++i) run.push_back(range[i].id);
+          if (!merge_equal_points_of(run)) return false;
+        }
+        begin = end;
+      }
+      return true;
+    } else {
+      return merge_equal_points_of(ids);
+    }
+  }
+  // The exact lexicographic order of `ids`, equal neighbours united.
+  bool merge_equal_points_of(std::vector<Index>& ids) {
     const auto compare = k_.compare_xyz_3_object();
     const auto by_point = [&](Index a, Index b) { return compare(points_[a], points_[b]); };
     if (!certified_sort(ids.begin(), ids.end(), by_point)) return false;

@@ -20,6 +20,7 @@
 #include "relgeo/kernel.h"
 #include "relgeo/mesh/self_intersection.h"
 #include "relgeo/mesh/validity.h"
+#include "support/implicit_oracle.h"
 #include "support/undecided_order_kernel.h"
 
 namespace relgeo::test {
@@ -553,37 +554,48 @@ TEST(MeshBooleanOperands, BadOperandsAreRefusedWithTheDefect) {
 }
 
 // The exact crossing points of the segments of one mesh's faces with the
-// other mesh's faces (both ways, rationals, coplanar segments left out),
-// less the input vertices: the points a Boolean of the two must number once
-// each.
+// other mesh's faces (both ways, coplanar segments left out), less the input
+// vertices: the points a Boolean of the two must number once each. From the
+// independent oracle (support/implicit_oracle.h: its orientations, and the
+// LPI point by Gaussian elimination in rationals).
 std::set<std::array<mpq_class, 3>> crossing_points(const Mesh& a, const Mesh& b) {
-  using Q3 = std::array<mpq_class, 3>;
-  const auto exact = [](const Point_3<double>& p) { return Q3{mpq_class(p.x), mpq_class(p.y), mpq_class(p.z)}; };
-  const auto orient = [](const Q3& a, const Q3& b, const Q3& c, const Q3& d) {
-    const Q3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]},
-        w{d[0] - a[0], d[1] - a[1], d[2] - a[2]};
-    return mpq_class(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-                     u[2] * (v[0] * w[1] - v[1] * w[0]));
+  using analysis::Implicit_point_definition;
+  const auto doubles = [](const Point_3<double>& p) { return std::array<double, 3>{p.x, p.y, p.z}; };
+  const auto exact = [&](const Point_3<double>& p) {
+    Implicit_point_definition d;
+    d.points[0] = doubles(p);
+    return *oracle_point(d);
   };
-  std::set<Q3> points;
+  const auto coordinates = [](const Exact_point& p) {
+    return std::array<mpq_class, 3>{p.coordinate(0), p.coordinate(1), p.coordinate(2)};
+  };
+  const auto sign = [](Certified_sign s) {
+    return certainly(s, Certified_sign::positive) ? 1 : certainly(s, Certified_sign::negative) ? -1 : 0;
+  };
+  std::set<std::array<mpq_class, 3>> points;
   for (int m = 0; m < 2; ++m) {
     const Mesh& e = m == 0 ? a : b;
     const Mesh& f = m == 0 ? b : a;
     for (const Triangle& te : e.faces)
       for (int i = 0; i < 3; ++i)
         for (const Triangle& tf : f.faces) {
-          const Q3 p = exact(e.vertices[te[i]]), q = exact(e.vertices[te[(i + 1) % 3]]);
-          const Q3 x = exact(f.vertices[tf[0]]), y = exact(f.vertices[tf[1]]), z = exact(f.vertices[tf[2]]);
-          const mpq_class op = orient(x, y, z, p), oq = orient(x, y, z, q);
-          if (sgn(op) * sgn(oq) > 0 || (sgn(op) == 0 && sgn(oq) == 0)) continue;
-          const int s1 = sgn(orient(p, q, x, y)), s2 = sgn(orient(p, q, y, z)), s3 = sgn(orient(p, q, z, x));
+          const Point_3<double>&p = e.vertices[te[i]], &q = e.vertices[te[(i + 1) % 3]];
+          const Exact_point ep = exact(p), eq = exact(q), x = exact(f.vertices[tf[0]]), y = exact(f.vertices[tf[1]]),
+                            z = exact(f.vertices[tf[2]]);
+          const int op = sign(oracle_orientation_3(x, y, z, ep)), oq = sign(oracle_orientation_3(x, y, z, eq));
+          if (op * oq > 0 || (op == 0 && oq == 0)) continue;
+          const int s1 = sign(oracle_orientation_3(ep, eq, x, y)), s2 = sign(oracle_orientation_3(ep, eq, y, z)),
+                    s3 = sign(oracle_orientation_3(ep, eq, z, x));
           if ((s1 < 0 || s2 < 0 || s3 < 0) && (s1 > 0 || s2 > 0 || s3 > 0)) continue;  // the line misses the face
-          const mpq_class t = op / (op - oq);
-          points.insert({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]), p[2] + t * (q[2] - p[2])});
+          Implicit_point_definition lpi;
+          lpi.kind = Implicit_point_kind::lpi;
+          lpi.points = {doubles(p), doubles(q), doubles(f.vertices[tf[0]]), doubles(f.vertices[tf[1]]),
+                        doubles(f.vertices[tf[2]])};
+          points.insert(coordinates(*oracle_point(lpi)));
         }
   }
   for (const Mesh* m : {&a, &b})
-    for (const auto& v : m->vertices) points.erase(exact(v));
+    for (const auto& v : m->vertices) points.erase(coordinates(exact(v)));
   return points;
 }
 

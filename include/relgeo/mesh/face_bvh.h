@@ -918,7 +918,7 @@ class Face_bvh {
   std::unique_ptr<Index[]> faces_;  // face of each slot
   std::size_t size_ = 0, node_count_ = 0;
   Box_3 bounds_;
-  Index leaf_size_ = 16;
+  Index leaf_size_ = static_cast<Index>(Face_bvh_options{}.leaf_size);  // set by build_tree
 };
 
 }  // namespace relgeo

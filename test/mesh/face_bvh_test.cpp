@@ -67,6 +67,7 @@ TEST(FaceBvh, CrossAndSelfPairsAreExactlyTheOverlappingBoxes) {
                                  [](const Face_pair& x, const Face_pair& y) { return x.first < y.first; }));
       // The two hierarchies' search in the queries' order: the same list.
       EXPECT_EQ(ta.overlapping_pairs_in_query_order(tb), with_boxes) << "leaf " << leaf << " n " << n;
+      EXPECT_EQ(ta.sorted_overlapping_pairs(tb), brute_pairs(a, b)) << "leaf " << leaf << " n " << n;
       std::size_t calls = 0;
       ta.for_each_overlapping_pair(tb, [&](Index, Index) { ++calls; });
       EXPECT_EQ(calls, brute_pairs(a, b).size());
@@ -108,6 +109,46 @@ TEST(FaceBvh, PairsBetweenGroupsAreThoseOfDifferentOrNoGroups) {
   EXPECT_EQ(sorted(pairs_between(std::vector<std::uint16_t>(boxes.size(), 0), 1)), brute_self_pairs(boxes));
   EXPECT_TRUE(pairs_between(std::vector<std::uint16_t>(boxes.size(), 7), 1).empty());
   EXPECT_THROW((void)pairs_between(std::vector<std::uint16_t>(5, 1), 1), Precondition_violation);
+}
+
+// A hierarchy built with clusters (Face_bvh_options::clusters) holds the
+// same boxes: every search finds the same pairs, whether the clusters are
+// spatially coherent, scattered at random, one, or all zero, and a search
+// between groups equal to the clusters leaves out exactly the pairs within a
+// nonzero group.
+TEST(FaceBvh, ClustersChangeTheTreeNotThePairs) {
+  const auto boxes = random_boxes(3000, 23, 1.0, 0.06);
+  const auto other = random_boxes(1200, 29, 1.0, 0.05);
+  const Face_bvh plain_other(other);
+  std::mt19937_64 g(9);
+  std::vector<std::uint16_t> by_region(boxes.size()), scattered(boxes.size()), one(boxes.size(), 1),
+      none(boxes.size(), 0), wide(boxes.size());
+  for (Index f = 0; f < boxes.size(); ++f) {
+    by_region[f] = static_cast<std::uint16_t>(boxes[f].lo[0] < -0.5 ? 0 : boxes[f].lo[0] < 0.3 ? 1 : 2);
+    scattered[f] = static_cast<std::uint16_t>(g() % 5);
+    wide[f] = static_cast<std::uint16_t>(g() % 3 == 0 ? 0 : 1 + g() % 65535);  // every bit of a cluster number
+  }
+  const auto self = brute_self_pairs(boxes);
+  const auto cross = brute_pairs(boxes, other);
+  for (const auto& clusters : {by_region, scattered, one, none, wide})
+    for (int leaf : {1, 4, 16}) {
+      const Face_bvh t(boxes, {.leaf_size = leaf, .clusters = clusters});
+      ASSERT_EQ(t.size(), boxes.size());
+      EXPECT_EQ(sorted(t.overlapping_pairs()), self) << "leaf " << leaf;
+      EXPECT_EQ(sorted(t.overlapping_pairs(plain_other)), cross) << "leaf " << leaf;
+      EXPECT_EQ(t.overlapping_pairs(plain_other, 2), t.overlapping_pairs(plain_other, 1));
+      // In an order that depends on neither hierarchy, on any thread count.
+      EXPECT_EQ(t.sorted_overlapping_pairs(plain_other), cross) << "leaf " << leaf;
+      EXPECT_EQ(plain_other.sorted_overlapping_pairs(t, 2), brute_pairs(other, boxes)) << "leaf " << leaf;
+      std::vector<Face_pair> expected;
+      for (const Face_pair& p : self)
+        if (clusters[p.first] == 0 || clusters[p.first] != clusters[p.second]) expected.push_back(p);
+      const auto between = t.collect_overlapping_pairs_between_groups<Face_pair>(
+          clusters, [](Index a, Index b, std::vector<Face_pair>& out) { out.push_back({a, b}); });
+      EXPECT_EQ(sorted(between), expected) << "leaf " << leaf;
+    }
+  EXPECT_THROW(Face_bvh(boxes, {.clusters = std::vector<std::uint16_t>(5, 1)}), Precondition_violation);
+  EXPECT_THROW(Face_bvh(boxes, {.split = Face_bvh_split::median, .clusters = scattered}), Precondition_violation);
 }
 
 TEST(FaceBvh, TouchingBoxesOverlapAndEqualCentresDoNotBreakTheSplit) {

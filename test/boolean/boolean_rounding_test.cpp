@@ -259,11 +259,13 @@ TEST(RoundingRepair, TheDetectionFindsEveryCrossingOfAFaceWithAMovableVertex) {
 // holds every defect's neighbourhood, and when it holds one only: then the
 // search of every face finds the rest (without it, the second repair
 // differs: the faces a test misses change which position, flip or collapse
-// is kept). The case: step 6 of the slab's chain (insertion-order
+// is kept). The case: step 8 of the slab's chain (insertion-order
 // triangulation), whose nearest rounding is repaired by moves, flips and
-// collapses.
+// collapses (step 6 was, until the broad phase's pairs came sorted and
+// numbered the new points otherwise; the assertions below say whether the
+// case still exercises all three).
 TEST(RoundingRepair, TheSearchNearTheDefectsRepairsAsTheSearchOfEveryFace) {
-  const Boolean_chain chain = make_chain(Chain_family::slab_and_boxes, 6, /*seed=*/1);
+  const Boolean_chain chain = make_chain(Chain_family::slab_and_boxes, 8, /*seed=*/1);
   Mesh_double current = chain.start;
   for (std::size_t i = 0; i + 1 < chain.steps.size(); ++i) {
     const auto step = boolean(current, chain.steps[i].second, chain.steps[i].first, Filtered_exact_kernel{},

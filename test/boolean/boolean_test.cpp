@@ -445,10 +445,11 @@ TEST(MeshBooleanThreads, TheResultDoesNotDependOnTheThreadCount) {
 }
 
 // The broad phase searches the operands' hierarchies against each other:
-// with the checks on, those the checks built; without them, built there.
-// The pairs' order decides the new vertices' numbers and, on cocircular
-// points, the Delaunay faces: the hierarchies must be the same for the
-// Boolean not to depend on whether the checks ran.
+// with the checks on, those the checks built (clustered by projected
+// patch); without them, built there (Morton order only). The pairs' order
+// decides the new vertices' numbers and, on cocircular points, the Delaunay
+// faces: the pairs are sorted, for the Boolean not to depend on which
+// hierarchies it searched.
 TEST(MeshBooleanBroadPhase, TheBooleanDoesNotDependOnWhetherTheChecksRan) {
   const Mesh a = icosphere(4);
   const Mesh turned = rigidly_moved(a, 0.05, 0.03, {0.002, 0.001, 0});

@@ -277,6 +277,10 @@ class Self_intersection_test {
     embedded_ = embedded_star_flags(k, point_, m.faces, projected, skip_, *t, &patch_);
     certified_ = true;
   }
+  /// Each face's projected patch (1, 2, ...; 0: none), empty without the
+  /// topology: the clusters of a hierarchy the search is fastest on
+  /// (Face_bvh_options::clusters).
+  const std::vector<std::uint16_t>& patches() const { return patch_; }
   Self_intersections run(const Face_bvh& bvh, int threads) && {
     if (certified_)
       find_self_intersections(k_, point_, m_.faces, skip_, bvh, threads, out_, &embedded_, &patch_);
@@ -388,7 +392,7 @@ Mesh_report check_solid(const Triangle_mesh<P>& m, const Mesh_check_options& opt
   const Test_kernel k{};
   Self_intersection_test<Test_kernel, P> test(m, k, &topology);
   checked.opposites = std::move(topology).take_opposites();
-  const Face_bvh& bvh = checked.bvh.emplace(m, Face_bvh_options{.threads = threads});
+  const Face_bvh& bvh = checked.bvh.emplace(m, Face_bvh_options{.threads = threads, .clusters = test.patches()});
   const Self_intersections found = std::move(test).run(bvh, threads);
   if (!found.undecided.empty() || !found.undecided_faces.empty())
     throw Error(Error_code::computation_failure,

@@ -291,7 +291,7 @@ Solid_report validate_solid(const Triangle_mesh<P>& m, const K& k, const Solid_v
   if (certified) {
     internal::find_self_intersections(k, m, point, skip, *certified, o.threads, si, star_flags);
   } else {
-    bvh.emplace(m, Face_bvh_options{.threads = o.threads});
+    bvh.emplace(m, Face_bvh_options{.threads = o.threads, .clusters = group});
     internal::find_self_intersections(k, point, m.faces, skip, *bvh, o.threads, si, star_flags,
                                       stars ? &group : nullptr);
   }

@@ -315,16 +315,7 @@ class Face_bvh {
     // every pair under other's first child comes before those under its
     // second (and the threads' parts join in the descent's order). A stable
     // sort by this face alone then gives the queries' order.
-    std::vector<std::uint64_t> word = collect_overlapping_pairs<std::uint64_t>(
-        other, [](Index a, Index b, std::vector<std::uint64_t>& out) { out.push_back((std::uint64_t{a} << 32) | b); },
-        threads);
-    std::vector<std::uint64_t> scratch;
-    internal::radix_sort_bits(word, scratch, 32, static_cast<int>(std::bit_width(std::uint64_t{size_})));
-    std::vector<std::uint64_t>().swap(scratch);  // freed before the pairs take its room
-    std::vector<Face_pair> pairs(word.size());
-    for (std::size_t i = 0; i < word.size(); ++i)
-      pairs[i] = {static_cast<Index>(word[i] >> 32), static_cast<Index>(word[i] & 0xFFFFFFFFu)};
-    return pairs;
+    return radix_sorted_pairs(other, threads, /*by_both=*/false);
   }
   /// \brief overlapping_pairs(other) sorted by (first, second): an order
   /// that depends on neither hierarchy's shape (leaf size, split, clusters),
@@ -332,18 +323,7 @@ class Face_bvh {
   /// numbers its new points by it) and whose hierarchies may be built in
   /// more than one way. One radix sort of the pairs after the search.
   std::vector<Face_pair> sorted_overlapping_pairs(const Face_bvh& other, int threads = 1) const {
-    const int low = static_cast<int>(std::bit_width(std::uint64_t{other.size_}));  // other's faces
-    std::vector<std::uint64_t> word = collect_overlapping_pairs<std::uint64_t>(
-        other, [low](Index a, Index b, std::vector<std::uint64_t>& out) { out.push_back((std::uint64_t{a} << low) | b); },
-        threads);
-    std::vector<std::uint64_t> scratch;
-    internal::radix_sort_bits(word, scratch, 0, low + static_cast<int>(std::bit_width(std::uint64_t{size_})));
-    std::vector<std::uint64_t>().swap(scratch);  // freed before the pairs take its room
-    const std::uint64_t mask = (std::uint64_t{1} << low) - 1;
-    std::vector<Face_pair> pairs(word.size());
-    for (std::size_t i = 0; i < word.size(); ++i)
-      pairs[i] = {static_cast<Index>(word[i] >> low), static_cast<Index>(word[i] & mask)};
-    return pairs;
+    return radix_sorted_pairs(other, threads, /*by_both=*/true);
   }
   /// Every pair of faces of this hierarchy (first < second) whose boxes overlap.
   std::vector<Face_pair> overlapping_pairs(int threads = 1) const {
@@ -708,6 +688,25 @@ class Face_bvh {
       begin = mid, node = children + 1;
     }
     leaf(node, begin, end);
+  }
+
+  // The pairs with other, each packed in a word (this face above other's),
+  // radix sorted (stably) by this face, or by both faces (`by_both`).
+  std::vector<Face_pair> radix_sorted_pairs(const Face_bvh& other, int threads, bool by_both) const {
+    const int shift = by_both ? static_cast<int>(std::bit_width(std::uint64_t{other.size_})) : 32;
+    std::vector<std::uint64_t> word = collect_overlapping_pairs<std::uint64_t>(
+        other,
+        [shift](Index a, Index b, std::vector<std::uint64_t>& out) { out.push_back((std::uint64_t{a} << shift) | b); },
+        threads);
+    const int this_bits = static_cast<int>(std::bit_width(std::uint64_t{size_}));
+    std::vector<std::uint64_t> scratch;
+    internal::radix_sort_bits(word, scratch, by_both ? 0 : shift, by_both ? shift + this_bits : this_bits);
+    std::vector<std::uint64_t>().swap(scratch);  // freed before the pairs take its room
+    const std::uint64_t mask = (std::uint64_t{1} << shift) - 1;
+    std::vector<Face_pair> pairs(word.size());
+    for (std::size_t i = 0; i < word.size(); ++i)
+      pairs[i] = {static_cast<Index>(word[i] >> shift), static_cast<Index>(word[i] & mask)};
+    return pairs;
   }
 
   // ---- pair traversal -------------------------------------------------------

@@ -166,7 +166,7 @@ class Projected_patch_finder {
       const bool strict = positive | certainly(sign, Certified_sign::negative);
       const auto a_key = static_cast<unsigned char>(1 + 2 * a + !positive);
       key = (a == largest) & strict ? a_key : key;
-      admits |= static_cast<unsigned char>(int(strict & (2 * n[a] >= n[largest])) << (a_key - 1));
+      admits |= static_cast<unsigned char>((strict & (2 * n[a] >= n[largest])) * bit(a_key));
     }
     key_[f] = key;
     admits_[f] = admits;
